@@ -17,7 +17,7 @@ from ._ffi import DomainError, as_points, as_size, lib
 from ._values import ValueEquality
 from .affine import (AffinePolyline, EdgeCountError, EndPieces, _curve_samples, _is_curve,
                      affine_end_pieces, affine_polyline, elastica_inflections, g2_bspline, quadratic_joint_curvatures)
-from .g2quad_points import (_built_locally, _local_source, _noisy_points_error,
+from .g2quad_points import (_built_locally, _end_curvatures, _local_source, _noisy_points_error,
                             _repeated_points)
 from .g2ends import (_end_curvature, _matched_ends, _menger_max, _rel_err, _seam_estimate,
                      _joins, _seam_rounding, _tangent_alone)
@@ -368,7 +368,8 @@ def end_piece_left_out(ends: EndPieces, n: int, nsamples: int) -> bool:
 
 
 def g2_quadratic(curve_or_points, n: int, samples_per_vertex: int = 20, tangents=None,
-                 fit: bool = False, partial: bool = False, *, _plain: bool = False,
+                 fit: bool = False, partial: bool = False, *, end_curvatures=None,
+                 _plain: bool = False,
                  **options) -> G2Quadratic:
     """Seed 002 end to end: approximate ``curve_or_points``, a SmoothElastica, a
     HermiteChain or an ElasticSpline (its pieces; a closed one opened at its point 0, its
@@ -381,7 +382,12 @@ def g2_quadratic(curve_or_points, n: int, samples_per_vertex: int = 20, tangents
     ends exactly on the source: at its end points and at its inflections
     (:func:`g2_bspline`; only the two end segments of a piece are not uniform).
     ``tangents`` (N+1, 2) of point data sharpen the replacement curve and give the
-    end tangent error; ``options`` go to :func:`affine_polyline`.
+    end tangent error; ``end_curvatures`` (k_start, k_end) of point data, the source's own
+    signed curvature at the first and last point (None for either: estimated from that
+    end's samples, _end_curvature), held there instead: closed samples (the last point the
+    first) given one tangent and one curvature at both ends close G2 (a FreeCAD closed wire
+    of a C2 source: the estimates from each side differ by ~5e-5 relative, a corner);
+    ``options`` go to :func:`affine_polyline`.
     Measured points are rarely accurate enough for the construction (801 samples of a
     300 mm S rounded to 1e-4 mm fail): ``fit=True`` fits one smooth elastica to them
     (:func:`fit`, point-to-curve distance) and builds from that curve (``fit`` of the
@@ -420,9 +426,9 @@ def g2_quadratic(curve_or_points, n: int, samples_per_vertex: int = 20, tangents
     closed = is_curve and bool(getattr(curve_or_points, "closed", False))
     n = as_size(n, "g2_quadratic: n (the polyline's edges)", 3)   # the user's call named
     if fit:
-        if is_curve or tangents is not None:
-            raise ValueError("g2_quadratic: fit=True fits point data (without tangents); "
-                             "a curve is built from as it is")
+        if is_curve or tangents is not None or end_curvatures is not None:
+            raise ValueError("g2_quadratic: fit=True fits point data (without tangents or "
+                             "end curvatures); a curve is built from as it is")
         from .fit import fit as fit_points
         fitted = fit_points(as_points(curve_or_points, "points"), model="smooth")
         try:
@@ -432,11 +438,12 @@ def g2_quadratic(curve_or_points, n: int, samples_per_vertex: int = 20, tangents
             raise
         g.fit = fitted
         return g
+    k_given = _end_curvatures(end_curvatures, is_curve)
     local = _local_source(curve_or_points, is_curve)
     if local is not None:   # far from (0, 0): built in a local frame, moved back (exactly)
         return _built_locally(lambda src: g2_quadratic(
-            src, n, samples_per_vertex, tangents, partial=partial, _plain=_plain, **options),
-            *local, CoverageError)
+            src, n, samples_per_vertex, tangents, partial=partial, end_curvatures=k_given,
+            _plain=_plain, **options), *local, CoverageError)
     options.setdefault("fit_ends", True)
     if not is_curve:    # doubled rows: the real cause, not the C status's list (QA23)
         said = _repeated_points(as_points(curve_or_points, "points"))
@@ -469,6 +476,7 @@ def g2_quadratic(curve_or_points, n: int, samples_per_vertex: int = 20, tangents
     npieces = len(ap.A)
     short = None        # why the polyline stops short of the source's end, if it does
     seam_dir = None     # closed samples without tangents: the one tangent both ends hold
+    seam_given = False  # closed samples given one tangent and curvature at both ends
     if is_curve:
         c = curve_or_points
         infl_s = elastica_inflections(c)
@@ -550,7 +558,13 @@ def g2_quadratic(curve_or_points, n: int, samples_per_vertex: int = 20, tangents
                      "paper's A = (S/n)^3 (fit_ends=False) stopping short of the end")
         inflection = not covers[0] or (not covers[1] and short is None)
         tan = None if tangents is None else as_points(tangents, "tangents")
-        k_src = [_end_curvature(samples, False, tan), _end_curvature(samples, True, tan)]
+        k_src = [_end_curvature(samples, e, tan) if k_given[e] is None else k_given[e]
+                 for e in (0, 1)]
+        # closed samples with the source's own tangent and curvature at their seam, both ends
+        # one (a FreeCAD closed wire's, C2 there): both held whatever the deviation, as a
+        # closed ElasticSpline's, so the outline closes G2
+        seam_given = (ring and tan is not None and all(covers) and k_given[0] is not None
+                      and k_given[0] == k_given[1] and np.array_equal(tan[0], tan[-1]))
         if ring and tan is None and all(covers) and len(samples) > 17:
             # closed samples without tangents: both ends held to one tangent and curvature,
             # the samples' own across the seam, so the splines close G2 there (QA25 F3)
@@ -570,7 +584,8 @@ def g2_quadratic(curve_or_points, n: int, samples_per_vertex: int = 20, tangents
                               k_src[0] if first else None, k_src[1] if last else None,
                               dirs[0] if first else None, dirs[1] if last else None)
         held = held or (seam_dir is not None and (first or last))
-        at_seam = held and ((closed and all(covers)) or seam_dir is not None)   # never given up
+        at_seam = held and ((closed and all(covers)) or seam_dir is not None   # never given up
+                            or seam_given)
         gave_up = [None, None]  # why each held end was given up, if it was
         try:
             bs = g2_bspline(x, ends[p], ends[p + 1])
@@ -722,7 +737,8 @@ def g2_quadratic(curve_or_points, n: int, samples_per_vertex: int = 20, tangents
             warnings.simplefilter("ignore", CoverageWarning)
             warnings.simplefilter("ignore", EndTangentWarning)
             more = covering_edges(lambda m: g2_quadratic(
-                curve_or_points, m, samples_per_vertex, tangents, partial=True, _plain=True,
+                curve_or_points, m, samples_per_vertex, tangents, partial=True,
+                end_curvatures=k_given, _plain=True,
                 **options), n, leaves_out=leaves_out)
         top = cover_search_limit(n)
         raise CoverageError(f"{what}: " + (f"n = {more} covers it" if more else

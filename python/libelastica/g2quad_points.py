@@ -183,3 +183,26 @@ def _built_locally(build, source, R: np.ndarray, coverage_error):
         for w in said:
             warnings.warn(w.message, stacklevel=4)
 
+
+def _end_curvatures(given, is_curve: bool):
+    """g2_quadratic's ``end_curvatures`` read: (k_start, k_end), each a finite float or None
+    (estimated from the samples); (None, None) when not given. Point data only."""
+    if given is None or (isinstance(given, tuple) and given == (None, None)):
+        return (None, None)
+    if is_curve:
+        raise ValueError("g2_quadratic: end_curvatures is for point data (a curve's own "
+                         "curvature is used)")
+    try:
+        pair = tuple(given)
+    except TypeError:
+        pair = ()
+    if len(pair) != 2:
+        raise ValueError(f"g2_quadratic: end_curvatures must be (k_start, k_end), got {given!r}")
+    out = []
+    for k in pair:
+        if k is not None:
+            k = float(k)
+            if not math.isfinite(k):
+                raise ValueError(f"g2_quadratic: end_curvatures must be finite, got {given!r}")
+        out.append(k)
+    return tuple(out)

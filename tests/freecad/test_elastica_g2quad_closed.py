@@ -39,14 +39,16 @@ class G2QuadClosedTest(S.DocTest):
         self.doc.recompute()
         return q
 
-    def assert_closed_g2(self, q, source_shape, dev, kjump=1e-6):
-        """Closed, tangents one where it closes, its curvature jump there below ``kjump``
-        (the library holds each end to the curvature it estimates from that side's samples:
-        on a C2 source they differ by up to ~5e-5, said in Status, not called G2)."""
-        self.assertTrue(q.Status.startswith("ok: closed, "), q.Status)
+    def assert_closed_g2(self, q, source_shape, dev, kjump=1e-9):
+        """Closed, G2 where it closes: the tangents' angle there (degrees) and the relative
+        curvature jump below ``kjump``, measured on the shape by OCC, and said so in Status
+        (a C2 source: both ends held to the source's own tangent and curvature at the seam;
+        they were held to the curvature the library estimated from each side's samples,
+        4.6e-5 apart on the egg, 1.9e-5 on the closed Elastic spline: G1 only)."""
+        self.assertTrue(q.Status.startswith("ok: closed, G2 where it closes"), q.Status)
         gap, ang, jump = seam(q.Shape)
         self.assertLess(gap, 1e-9)
-        self.assertLess(ang, 1e-6)
+        self.assertLess(ang, kjump)
         self.assertLess(jump, kjump)
         said = float(q.Status.split("curvature jump ")[1].split(")")[0].split(" ")[0])
         self.assertLess(said, kjump)     # (relative to the source's curvature scale)
@@ -75,7 +77,7 @@ class G2QuadClosedTest(S.DocTest):
         c.buildFromPoles(poles, True, 3)
         sk = self.sketch("Egg", [c])
         q = self.feature(sk, ["Edge1"])
-        self.assert_closed_g2(q, sk.Shape, 1.0, 1e-3)    # 170 mm egg
+        self.assert_closed_g2(q, sk.Shape, 1.0)    # 170 mm egg
 
     def test_a_closed_source_with_inflections(self):
         """A kidney-shaped periodic B-spline (4 inflections): opened in the middle of its
@@ -90,7 +92,7 @@ class G2QuadClosedTest(S.DocTest):
         sk = self.sketch("Kidney", [c])
         q = self.feature(sk, ["Edge1"], edges=48)
         self.assertEqual(q.Pieces, 5)
-        self.assert_closed_g2(q, sk.Shape, 0.5, 1e-3)
+        self.assert_closed_g2(q, sk.Shape, 0.5)
 
     def test_a_circle(self):
         sk = S.circle_sketch(self.doc)
@@ -107,7 +109,7 @@ class G2QuadClosedTest(S.DocTest):
         self.doc.recompute()
         self.assertTrue(sp.Status.startswith("ok"), sp.Status)
         q = self.feature(sp, (), edges=48)
-        self.assert_closed_g2(q, sp.Shape, 1.0, 1e-3)
+        self.assert_closed_g2(q, sp.Shape, 1.0)
 
     def test_a_wire_of_arcs_joined_g1_closes_g2(self):
         """An oval of four arcs (R 50, r 15) joined G1: the curvature jumps at each join.
@@ -141,3 +143,24 @@ class G2QuadClosedTest(S.DocTest):
         said = float(q.Status.split("tangents ")[1].split(" deg")[0])
         self.assertAlmostEqual(said, ang, delta=0.01 * ang)
         self.assertGreater(ang, 60)
+
+    def test_a_source_only_c1_where_it_closes_is_said_so(self):
+        """FreeCAD 0.20's interpolate(PeriodicFlag=True) is C1 only at its seam (end
+        multiplicities 2: curvature 0.0156 against 0.0900 on its two sides): each end held to
+        the source's own curvature on its side, Status says why it is not G2 there."""
+        pts = [OFFSET + V(60 * math.cos(t), 25 * math.sin(t) + 3 * math.cos(2 * t), 0)
+               for t in (2 * math.pi * i / 9 for i in range(9))]
+        c = Part.BSplineCurve()
+        c.interpolate(Points=pts, PeriodicFlag=True)
+        k0, k1 = c.curvature(c.FirstParameter), c.curvature(c.LastParameter)
+        sk = self.sketch("Periodic", [c])
+        q = self.feature(sk, ["Edge1"], edges=48)
+        if abs(k0 - k1) <= 1e-9 * max(k0, k1):      # (a FreeCAD whose periodic one is C2)
+            self.assert_closed_g2(q, sk.Shape, 1.0)
+            return
+        self.assertTrue(q.Status.startswith("ok: closed, not G2 where it closes"), q.Status)
+        self.assertIn("the source's own curvature differs on the two sides", q.Status)
+        gap, ang, jump = seam(q.Shape)
+        self.assertLess(gap, 1e-9)
+        self.assertLess(ang, 1e-5)      # (8.5e-7 deg: its end tangents held, not to the bit)
+        self.assertGreater(jump, 1e-3)

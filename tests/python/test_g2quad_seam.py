@@ -77,3 +77,50 @@ def test_closed_samples_ending_off_by_rounding_close_g2():
     g = _quiet(P, 24)
     assert g.seam_angle is not None and g.seam_angle < SEAM_BOUND
     assert math.isclose(g.bsplines[-1].poles[-1][0], g.bsplines[0].poles[0][0], abs_tol=0)
+
+
+def _periodic_egg(n):
+    """20 n + 1 samples (even in arc length, the last the first), unit tangents and the
+    seam's curvature of a periodic cubic B-spline egg through 8 poles (C2, as FreeCAD's
+    Sketcher draws one), its seam at a knot."""
+    from scipy.interpolate import BSpline
+    P = np.array([[70 * math.cos(a) + 12 * math.cos(2 * a), 40 * math.sin(a)]
+                  for a in 2 * np.pi * np.arange(8) / 8])
+    b = BSpline(np.arange(15, dtype=float), np.vstack([P, P[:3]]), 3)   # domain [3, 11]
+    d1, d2 = b.derivative(1), b.derivative(2)
+    u = np.linspace(3.0, 11.0, 20001)
+    arc = np.r_[0.0, np.cumsum(np.hypot(*np.diff(b(u), axis=0).T))]
+    uu = np.interp(np.linspace(0.0, arc[-1], 20 * n + 1), arc, u)
+    uu[-1] = 3.0
+    T = d1(uu)
+    a, c = d1(3.0), d2(3.0)
+    return b(uu), T / np.hypot(*T.T)[:, None], float((a[0] * c[1] - a[1] * c[0]) / np.hypot(*a) ** 3)
+
+
+@pytest.mark.parametrize("n", [24, 48])
+def test_closed_samples_given_the_seams_curvature_close_g2(n):
+    # end_curvatures: a C2 source's own curvature at the seam, both ends (FreeCAD's closed
+    # wires hand it): G2 there (2.2e-14, 5.9e-15); each end's estimate from its own side's
+    # samples put them 4.6e-5 / 5.7e-6 apart, a corner in curvature; the deviation the same
+    xy, tan, k = _periodic_egg(n)
+    est = el.g2_quadratic(xy, n, tangents=tan)
+    assert not est.seam_is_g2 and est.seam_curvature_jump > 1e-6
+    g = _quiet(xy, n, tangents=tan, end_curvatures=(k, k))
+    assert g.seam_is_g2 and g.seam_angle <= SEAM_BOUND and g.seam_curvature_jump <= SEAM_BOUND
+    assert g.deviation <= est.deviation * (1 + 1e-6)
+    for e in (0, -1):       # the source's curvature held at both ends
+        b = g.bsplines[e]
+        assert abs(float(b.curvature(b.knots[[e]])[0]) - k) <= 1e-11 * abs(k)
+
+
+def test_end_curvatures_are_checked():
+    xy, tan, k = _periodic_egg(24)
+    for bad in ((k,), (k, math.nan), "ab"):
+        with pytest.raises(ValueError):
+            el.g2_quadratic(xy, 24, tangents=tan, end_curvatures=bad)
+    with pytest.raises(ValueError):
+        el.g2_quadratic(el.SmoothElastica(0, 0, 0, 1, 0.5, 0, 2), 12, end_curvatures=(1, 1))
+    # one end given, the other estimated: an open source's end held to the given one
+    g = _quiet(xy[:300], 15, tangents=tan[:300], end_curvatures=(k, None))
+    b = g.bsplines[0]
+    assert abs(float(b.curvature(b.knots[[0]])[0]) - k) <= 1e-11 * abs(k)

@@ -61,7 +61,7 @@ def g2quad_core(edges, plane=None, nedges=24):
         refs = []
         try:
             sampled[top] = _chain_samples(edges, plane, top, closed)
-            for xy, tan in (own, sampled[top]):
+            for xy, tan in (own[:2], sampled[top][:2]):
                 refs.append((el().affine_end_pieces(xy, tan), len(xy)))
             needed[0] = refs[-1][0].n_both
         except Exception:       # (noqa: BLE001) not known: every count sampled, as before
@@ -74,7 +74,7 @@ def g2quad_core(edges, plane=None, nedges=24):
             try:
                 if m not in sampled:
                     sampled[m] = _chain_samples(edges, plane, m, closed)
-                xy, tan = sampled[m]
+                xy, tan = sampled[m][:2]
                 ends = el().affine_end_pieces(xy, tan)
             except Exception:       # (noqa: BLE001) not known: built, and refused, as before
                 return False
@@ -96,29 +96,62 @@ def g2quad_core(edges, plane=None, nedges=24):
                                f"has an inflection {ends}; trim that end of it, or pick a "
                                "curve without it"))
     corner = closed and _angle(own[1][0], own[1][-1]) > SEAM_SMOOTH
-    return {"result": g, "placement": plane, "closed": closed, "corner": corner}
+    return {"result": g, "placement": plane, "closed": closed, "corner": corner,
+            "seam_curvatures": own[2]}
 
 
 def _chain_samples(edges, plane, n, closed=False):
     """The chain's SAMPLES_PER_VERTEX x n samples and unit tangents in ``plane``'s
-    coordinates (the points _g2quad builds from at n edges); raises InputProblem."""
+    coordinates, and a closed one's curvatures at its seam (_closed; else None): the points
+    _g2quad builds from at n edges; raises InputProblem."""
     pts, tangents = sample_chain(edges, SAMPLES_PER_VERTEX * n)
     xy, tan = _in_plane(pts, tangents, plane)[:2]
-    return _close_samples(xy, tan) if closed else (xy, tan)
+    return _closed(edges, pts, xy, tan, plane) if closed else (xy, tan, None)
+
+
+# the source's own curvatures on the two sides of a closed wire's seam are one (a C2 source:
+# held as one, the first's, to the bit) when they agree to this, relative to the larger
+SEAM_SAME_K = 1e-9
+
+
+def _closed(edges, pts, xy, tan, plane):
+    """(xy, tan, (k_start, k_end)) of a closed chain's samples (_close_samples) with the
+    source's own curvature at the seam on each side (plane_curvature of the edge there, as
+    el.g2_quadratic's end_curvatures take them), one value where the source is smooth there
+    (SEAM_SAME_K): the library then holds both ends to one tangent and one curvature and
+    the outline closes G2, as a closed ElasticSpline's (it estimated each end's curvature
+    from its own side's samples: a C2 periodic B-spline's differ by ~5e-5 relative).
+    (None for the curvatures at a corner: each end its own tangent, estimated, as before.)"""
+    xy, tan, mid = _close_samples(xy, tan)
+    if _angle(tan[0], tan[-1]) > 0.0:
+        return xy, tan, None
+    if mid:             # rolled: the seam inside an edge, the same curve on both sides
+        P = App.Vector(pts[mid])
+        e = min(edges, key=lambda e: e.distToShape(Part.Vertex(P))[0])
+        k = plane_curvature(e, None, tan[0], plane, u=e.Curve.parameter(P))
+        return xy, tan, (k, k)
+    ks = []
+    for e, P, at_end in ((edges[0], App.Vector(pts[0]), False), (edges[-1], App.Vector(pts[-1]), True)):
+        # the end of the edge the chain leaves (enters) at P: a closed edge's own (a circle,
+        # a periodic B-spline: sampled from its first to its last parameter)
+        d0, d1 = ((e.valueAt(u) - P).Length for u in (e.FirstParameter, e.LastParameter))
+        u = e.LastParameter if (d1 < d0 or (at_end and d1 == d0)) else e.FirstParameter
+        ks.append(plane_curvature(e, None, tan[-1 if at_end else 0], plane, u=u))
+    same = abs(ks[0] - ks[1]) <= SEAM_SAME_K * max(abs(ks[0]), abs(ks[1]))
+    return xy, tan, (ks[0], ks[0]) if same else tuple(ks)
 
 
 def _close_samples(xy, tan):
     """The samples of a closed wire as el.g2_quadratic takes a closed outline: the last
     point the first, to the bit (OCC's seam vertex is ~1e-15 apart in the plane), and where
     the wire is smooth there (tangents within SEAM_SMOOTH) both ends' tangents one, the
-    first's, so the splines close tangent-continuous (seam_angle ~1e-13; the library holds
-    each end to the curvature it estimates from that side's samples: on a C2 periodic
-    B-spline they differ by ~5e-5 relative, a circle's or an ellipse's ~1e-14); at a corner
-    both kept, and the splines close at that corner (seam_angle said)."""
+    first's, so the splines close tangent-continuous (seam_angle ~1e-13; _closed adds the
+    source's own curvature there); at a corner both kept, and the splines close at that
+    corner (seam_angle said). Also the sample index the seam is rolled to (0: not rolled)."""
     xy, tan = xy.copy(), tan.copy()
     xy[-1] = xy[0]
     if _angle(tan[0], tan[-1]) > SEAM_SMOOTH:
-        return xy, tan
+        return xy, tan, 0
     tan[-1] = tan[0]
     # a source with inflections: the seam moved to the middle of its longest inflection-free
     # stretch (the samples rolled), where the end pieces have room to hold the tangent and
@@ -129,13 +162,13 @@ def _close_samples(xy, tan):
     sign = sign[sign != 0]
     keep = np().flatnonzero(np().sign(turn) != 0)
     if len(sign) < 3 or np().all(sign == sign[0]):
-        return xy, tan
+        return xy, tan, 0
     change = np().flatnonzero(sign != np().roll(sign, -1))   # run ends (circular)
     runs = np().diff(np().r_[change, change[0] + len(sign)])
     j = int(np().argmax(runs))
     mid = keep[(change[j] + 1 + runs[j] // 2) % len(sign)]
     ring, tr = np().roll(xy[:-1], -mid, axis=0), np().roll(tan[:-1], -mid, axis=0)
-    return np().vstack([ring, ring[:1]]), np().vstack([tr, tr[:1]])
+    return np().vstack([ring, ring[:1]]), np().vstack([tr, tr[:1]]), int(mid)
 
 
 def _angle(a, b):
@@ -197,21 +230,23 @@ def _in_plane(pts, tangents, plane):
 
 def _g2quad(edges, plane, n, samples=None, closed=False):
     """(libelastica G2Quadratic of the chain with n edges, the plane, its samples (xy,
-    tangents)); raises InputProblem. ``samples``: _chain_samples(edges, plane, n, closed)
-    when the caller has them (plane given); ``closed``: a closed wire (_close_samples)."""
+    tangents, a closed one's seam curvatures)); raises InputProblem. ``samples``:
+    _chain_samples(edges, plane, n, closed) when the caller has them (plane given);
+    ``closed``: a closed wire (_closed: its seam held to the source's own curvature)."""
     pts, tangents = sample_chain(edges, SAMPLES_PER_VERTEX * n) if samples is None else (None, None)
     try:
         if samples is None:
             xy, tan, plane = _in_plane(pts, tangents, plane)
+            kseam = None
             if closed:
-                xy, tan = _close_samples(xy, tan)
+                xy, tan, kseam = _closed(edges, pts, xy, tan, plane)
         else:
-            xy, tan = samples
+            xy, tan, kseam = samples
         with warnings.catch_warnings():   # g2quad_core says what is left out
             warnings.simplefilter("ignore", el().CoverageWarning)
             # (an end tangent not held: its figure is SourceEndTangentError's)
             warnings.simplefilter("ignore", el().EndTangentWarning)
-            g = el().g2_quadratic(xy, n, tangents=tan, partial=True)
+            g = el().g2_quadratic(xy, n, tangents=tan, partial=True, end_curvatures=kseam)
     except InputProblem:
         raise
     except el().DomainError as exc:
@@ -223,7 +258,7 @@ def _g2quad(edges, plane, n, samples=None, closed=False):
                            "throughout") from None
     except (ValueError, ArithmeticError, RuntimeError) as exc:
         raise InputProblem(f"G2 quadratic B-spline failed: {exc}") from None
-    return g, plane, (xy, tan)
+    return g, plane, (xy, tan, kseam)
 
 
 def _joins(edges, plane):
@@ -330,8 +365,8 @@ def seam_status(g, corner=False):
             f"ok: closed, not G2 where it closes: tangents {angle:.3g} deg apart, relative "
             f"curvature jump {jump:.3g} (" + (
                 "the source has a corner there)" if corner else
-                "each end held to the source's curvature estimated from its own side's "
-                "samples)" if angle <= 1e-6 else
+                "the source's own curvature differs on the two sides: not G2 there)"
+                if angle <= 1e-6 else
                 "the source is smooth there: more Edges)"))
 
 
