@@ -11,7 +11,7 @@ from typing import Optional
 
 import numpy as np
 
-from ._ffi import DomainError
+from ._ffi import DomainError, as_points
 from .bspline import BSpline
 from .core import SmoothElastica
 
@@ -139,9 +139,12 @@ def _local_source(source, is_curve: bool):
     HermiteChain: a copy with its pieces moved), with its start(s) less R, so that it is
     evaluated in the local frame (its samples' rounding that of its size, not of R)."""
     if not is_curve:
-        xy = np.asarray(source, dtype=np.float64)
-        if xy.ndim != 2 or xy.shape[1] != 2 or len(xy) < 2 or not np.all(np.isfinite(xy)):
+        try:        # (a table with named columns too, as g2_quadratic reads it)
+            xy = as_points(source, "points")
+        except (ValueError, TypeError):
             return None         # (g2_quadratic's own checks say what is wrong)
+        if len(xy) < 2 or not np.all(np.isfinite(xy)):
+            return None
         R = _local_origin(xy)
         return (xy - R, R) if np.any(R) else None
     pieces = [source] if isinstance(source, SmoothElastica) else getattr(source, "pieces", None)
