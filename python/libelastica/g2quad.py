@@ -18,7 +18,7 @@ from ._values import ValueEquality
 from .affine import (AffinePolyline, EdgeCountError, EndPieces, _curve_samples, _is_curve,
                      affine_end_pieces, affine_polyline, elastica_inflections, g2_bspline, quadratic_joint_curvatures)
 from .g2quad_points import (_built_locally, _end_curvatures, _local_source, _noisy_points_error,
-                            _repeated_points)
+                            _repeated_points, _seam_duck)
 from .g2ends import (_end_curvature, _matched_ends, _menger_max, _rel_err, _seam_estimate,
                      _joins, _seam_rounding, _tangent_alone)
 
@@ -698,10 +698,14 @@ def g2_quadratic(curve_or_points, n: int, samples_per_vertex: int = 20, tangents
                     inflection_tangent_error=max(ierr) if ierr else None,
                     seam_bound=seam_bound)
     if seam is not None and closed and not g.seam_is_g2:
+        duck = _seam_duck(curve_or_points)
+        other = ("another one (np.roll), away from an inflection and with room for 7 edges to "
+                 "the next" if duck is None or duck[0] == 0 or duck[1] <= duck[2] else
+                 f"duck {duck[0]} (np.roll(points, -{duck[0]})): {duck[1]:.3g} of the length "
+                 f"from the nearest inflection, duck 0 {duck[2]:.3g}")
         missed.append(("seam", seam[0], (
             f"the closed outline has a corner where it closes (point 0), relative "
-            f"curvature jump {seam[1]:.3g}: more edges, or the ducks started at another "
-            "one (np.roll), away from an inflection and with room for 7 edges to the next")))
+            f"curvature jump {seam[1]:.3g}: more edges, or the ducks started at {other}")))
     elif seam is not None and seam[0] > seam_bound[0]:    # closed samples: their two ends' own
         missed.append(("seam", seam[0], (              # tangents, estimated apart
             f"the points close on themselves (the last is the first) and the splines close "

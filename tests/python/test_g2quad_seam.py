@@ -124,3 +124,18 @@ def test_end_curvatures_are_checked():
     g = _quiet(xy[:300], 15, tangents=tan[:300], end_curvatures=(k, None))
     b = g.bsplines[0]
     assert abs(float(b.curvature(b.knots[[0]])[0]) - k) <= 1e-11 * abs(k)
+
+
+def test_a_seam_at_a_corner_names_the_duck_that_closes_g2():
+    # a bean of 10 ducks: its point 0 is 0.066 of the length from an inflection and its
+    # outline closes at a corner (30, 4.8 deg at 24, 48 edges; G2 from 96); the warning names
+    # the duck farthest from one (9, at 0.188), where the spline started closes G2 at 48
+    # (the ducks nearer than ~0.08 never did up to 96: 0.33, 0.33, 0.16 deg)
+    t = np.linspace(0, 2 * np.pi, 10, endpoint=False)
+    r = 30 + 8 * np.cos(2 * t)
+    pts = np.c_[1.2 * r * np.cos(t), r * np.sin(t) - 14 * np.cos(t) ** 2 * (np.sin(t) > 0)]
+    with pytest.warns(el.EndTangentWarning, match=r"duck 9 \(np.roll\(points, -9\)\)") as said:
+        g = el.g2_quadratic(el.elastic_spline(pts, closed=True), 48)
+    assert not g.seam_is_g2 and [m for m, _ in said[0].message.misses] == ["seam"]
+    rolled = _quiet(el.elastic_spline(np.roll(pts, -9, axis=0), closed=True), 48)
+    assert rolled.seam_is_g2 and rolled.seam_curvature_jump <= SEAM_BOUND
