@@ -2,8 +2,9 @@
 blend command does (QA: they took the end nearest the points whatever was clicked), checked
 by the GUI smoke test (gui_smoke.py calls run_all): an arc clicked near its end vertex is
 followed there (StartEdgeAt / StartTangentAt 'end vertex'), near its start vertex there,
-and a scripted selection (no click) keeps the nearest end. Screenshot:
-gui_spline_end_clicked.png."""
+and a scripted selection (no click) keeps the nearest end; an end edge clicked that stops
+31 mm short of the last duck (QA qagui F1) lends its sense into the edge, not the reverse,
+said on the warning line. Screenshots: gui_spline_end_clicked.png, gui_spline_end_short.png."""
 import math
 
 import FreeCAD as App
@@ -70,6 +71,49 @@ def edge_button_clicks(doc, feature, button, prop, arc):
                 f"{feature.Label}: freed, {prop}At {getattr(feature, prop + 'At')!r}")
 
 
+def end_short_of_arc(doc):
+    """The QA's profile (qagui f1.py): ducks climbing towards an arc r 60 (200 to 330 deg)
+    whose start lies 31 mm past the last duck; the arc clicked near its start as the end
+    edge, tangent then G2: the end runs into the arc as at that vertex (on main: 180 deg
+    off, a hook back), G2 with its curvature, and the warning line says so."""
+    import Part
+    from freecad.elastica import taskpanels as T
+    prof = doc.addObject("Sketcher::SketchObject", "ShortArc")
+    prof.Placement = S.SKETCH_PLACEMENT
+    prof.addGeometry(Part.ArcOfCircle(Part.Circle(App.Vector(330, 90, 0), App.Vector(0, 0, 1),
+                                                  60.0), math.radians(200), math.radians(330)),
+                     False)
+    ducks = S.points_sketch(doc, [(140, 8), (190, 30), (225, 40), (248, 52)], "ShortDucks")
+    doc.recompute()
+    Gui.SendMsgToActiveView("ViewFit")
+    G.select(doc, [(ducks, "")])
+    Gui.runCommand("Elastica_Spline")
+    G.wait()
+    panel = T.CURRENT[0]
+    s = panel.obj
+    click(doc, prof, 0.1)
+    panel.ends[1][1].click()
+    G.wait()
+    arc = prof.Shape.Edges[0]
+    into = App.Vector(arc.tangentAt(arc.FirstParameter))
+    for index, condition in ((1, "tangent"), (2, "G2")):
+        panel.ends[1][0].setCurrentIndex(index)
+        G.wait()
+        e = s.Shape.Edges[0]
+        t = App.Vector(e.tangentAt(e.LastParameter))
+        k = e.Curve.curvature(e.LastParameter)
+        said = panel.warning[1].text() if panel.warning[0].isVisible() else ""
+        G.check(s.EndCondition == condition and s.EndEdgeAt == "start vertex" and
+                math.degrees(t.getAngle(into)) < 1e-7 and
+                (condition == "tangent" or abs(k - 1 / 60.0) < 1e-8) and
+                "running into the edge as at its start vertex" in said and "97.6 deg" in said,
+                f"spline: an end 31 mm short of the arc runs into it ({condition}): "
+                f"{math.degrees(t.getAngle(into)):.3g} deg off, curvature {k:.5g}; {said!r}")
+    G.screenshot("gui_spline_end_short.png")
+    panel.reject()
+    G.wait()
+
+
 def run_all(smoke):
     global G
     G = smoke
@@ -86,6 +130,7 @@ def run_all(smoke):
     edge_button_clicks(doc, s, panel.ends[0][1], "StartEdge", arc)
     panel.reject()
     G.wait()
+    end_short_of_arc(doc)
     xy, _ = S.keyline_xy(40)
     pts = S.points_sketch(doc, xy, "FitPoints")
     f = Fi.make(doc, [(pts, [])], Model="smooth")

@@ -38,14 +38,17 @@ DUCKS_NEED = ("points: sketch points or vertices, a sketch of points, a Points o
 def end_condition(edge, condition, point, neighbour, arriving, seam=False, at_end=None):
     """What an end of the spline at ``point`` (3D; ``neighbour`` the next duck
     inwards) takes from ``edge`` at the edge's end nearest the point: (edge, at_end,
-    3D unit direction of travel, gap). The spline leaves a start edge continuing it
-    and arrives at an end edge running into it; an edge that does not touch the
-    point only lends its direction, turned to run along the spline. A closed edge (a
-    full circle or ellipse: its seam is no end) is met at its point nearest the point
-    (u: its parameter there, else None), in the direction that runs along the spline;
-    ``seam``: at its seam instead, the rule before 4a0ae84 (seam_changes). ``at_end``
-    (open edges): True / False joins its end / start vertex (the end clicked), None the
-    end nearest the point."""
+    3D unit direction of travel, gap, turn). The spline leaves a start edge continuing it
+    and arrives at an end edge running into it: at an open edge's start vertex along the
+    edge's own direction, at its end vertex against it, whether or not the point lies on
+    that vertex (an edge short of the point lends that direction as it is: turned to run
+    along the spline's last span it arrived reversed, a hook 180 deg off the edge, QA
+    qagui F1). A closed edge (a full circle or ellipse: its seam is no end) is met at its
+    point nearest the point (u: its parameter there, else None), in the direction that
+    runs along the spline (its point has no 'into'); ``seam``: at its seam instead, the
+    rule before 4a0ae84 (seam_changes). ``at_end`` (open edges): True / False joins its
+    end / start vertex (the end clicked), None the end nearest the point. 'turn': the
+    angle (deg) between the end span's chord and the direction taken."""
     u = nearest_parameter(edge, point) if edge.isClosed() and not seam else None
     if u is None:
         if at_end is None:
@@ -56,12 +59,38 @@ def end_condition(edge, condition, point, neighbour, arriving, seam=False, at_en
         at_end, p, leaving = False, edge.valueAt(u), App.Vector(edge.tangentAt(u)).normalize()
     direction = -leaving if arriving else leaving
     gap = (p - point).Length
-    if u is not None or gap > 1e-7 * (1.0 + (neighbour - point).Length):
-        inward = (point - neighbour) if arriving else (neighbour - point)
-        if direction.dot(inward) < 0:
-            direction = -direction
+    inward = (point - neighbour) if arriving else (neighbour - point)
+    if u is not None and direction.dot(inward) < 0:
+        direction = -direction
+    turn = math.degrees(direction.getAngle(inward)) if inward.Length > 0.0 else 0.0
     return {"edge": edge, "at_end": at_end, "u": u, "direction": direction, "gap": gap,
-            "condition": condition}
+            "condition": condition, "turn": turn}
+
+
+def gap_caution(c, j, what):
+    """The warning for an end ``c`` (end_condition; ``j`` 0 the start, 1 the end, ``what``
+    'the start edge' / 'the end edge') whose edge does not touch its point: which of the
+    edge's points lends what, in which sense, that the spline does not meet it, and where
+    the spline bends more than a right angle from its end span to take that sense (the
+    edge's end lies back or aside of the points: the bend is the edge's, never a reversal)."""
+    point = "first" if j == 0 else "last"
+    taken = "direction and curvature" if c["condition"] == "G2" else "direction"
+    if c["u"] is None:
+        vertex = "end vertex" if c["at_end"] else "start vertex"
+        where, on = f"{what}'s end", "that vertex"
+        sense = (f"leaves the {point} point continuing the edge as from its {vertex}"
+                 if j == 0 else f"arrives at the {point} point running into the edge as at "
+                 f"its {vertex}")
+        vertex = f" (its {vertex})"
+    else:                          # closed: met at its nearest point, not an end
+        where, on, vertex = f"{what} (closed)", "a point on the edge", ""
+        sense = f"takes its {taken} at its nearest point"
+        taken = ""
+    bend = (f"; to do so it bends {c['turn']:.3g} deg away from its {point} span"
+            if c["turn"] > 90.0 else "")
+    return (f"{where} is {length_mark(c['gap'])} from the {point} point{vertex}: the spline "
+            f"{sense}{f' (its {taken})' if taken else ''} but does not meet it{bend}; to join, "
+            f"make the {point} point {on} (pick it, or constrain them coincident)")
 
 
 def duck_forces(sp):
@@ -158,17 +187,7 @@ def spline_core(points, plane=None, mode="tension", tension=0.0, length=0.0, clo
         else:
             specs[j] = (float(t[0]), float(t[1]))
         if c["gap"] > 1e-7 * (1.0 + extent):   # a gap is not a join: said, not moved
-            point = "first" if j == 0 else "last"
-            taken = "direction and curvature" if c["condition"] == "G2" else "direction"
-            if c["u"] is None:
-                where, on = f"{what}'s end", "the edge's end vertex"
-            else:                          # closed: met at its nearest point, not an end
-                where, on, taken = f"{what} (closed)", "a point on the edge", \
-                    f"{taken} at its nearest point"
-            cautions.append(f"{where} is {length_mark(c['gap'])} from the {point} point: the "
-                            "spline "
-                            f"takes its {taken} but does not meet it; to join, make the "
-                            f"{point} point {on} (pick it, or constrain them coincident)")
+            cautions.append(gap_caution(c, j, what))
     if mode == "length":
         polygon = float(n.sum(n.hypot(*n.diff(n.vstack([xy, xy[:1]]) if closed else xy,
                                                axis=0).T)))
