@@ -93,6 +93,42 @@ def gap_caution(c, j, what):
             f"make the {point} point {on} (pick it, or constrain them coincident)")
 
 
+# an open batten's first and last points "nearly meet" (closing_hint) where their gap is no
+# longer than the longest span between the points and at most this part of the outline's size,
+# and the polygon through them turns at least GOES_ROUND deg (a hairpin, 175 deg, is no outline)
+NEAR_CLOSE = 0.2
+GOES_ROUND = 270.0
+
+
+def closing_hint(xy, sp):
+    """The warning for an open natural batten through plane points ``xy`` (n, 2) whose first
+    and last points nearly meet (an outline drawn round without repeating its first point,
+    QA qagui F9: 24 points of an oval 300 x 180 mm, the ends 16.2 mm apart, their tangents
+    37.5 deg): their gap no longer than the longest span between the points and at most
+    NEAR_CLOSE of the points' extent (the diagonal of their box), the polygon through them
+    turning GOES_ROUND deg or more (the QA's oval 311; a hairpin's 175: not). Sketcher's
+    B-spline by points asks periodic or not as it is drawn; here Closed says it: [the hint]
+    or []."""
+    n = np()
+    if len(xy) < 4:
+        return []
+    gap = float(n.hypot(*(xy[-1] - xy[0])))
+    longest = float(n.max(n.hypot(*n.diff(xy, axis=0).T)))
+    size = float(n.hypot(*(xy.max(axis=0) - xy.min(axis=0))))
+    d = n.diff(xy, axis=0)
+    heading = n.arctan2(d[:, 1], d[:, 0])
+    round_ = abs(math.degrees(float(n.sum(n.remainder(n.diff(heading) + math.pi, 2 * math.pi)
+                                          - math.pi))))
+    if not (gap <= longest and gap <= NEAR_CLOSE * size and round_ >= GOES_ROUND):
+        return []
+    a = sp.angle(2)
+    turn = abs(math.degrees(math.remainder(float(a[-1] - a[0]), 2 * math.pi)))
+    return [f"the first and last points are {length_mark(gap)} apart (the outline "
+            f"{length_mark(size)} across) but Closed is off: the open batten leaves that gap "
+            f"and its ends run {turn:.3g} deg apart; if the points go round an outline, set "
+            "Closed for a closed batten through them"]
+
+
 def duck_forces(sp):
     """(n, 2) force each duck (point) exerts on the batten (units of EI/2, 1/mm^2):
     with F_i the constant force of piece i (the batten after a section pulling on the
@@ -220,6 +256,8 @@ def spline_core(points, plane=None, mode="tension", tension=0.0, length=0.0, clo
         cautions.append(f"the points end where they start (a closed wire) but Closed is off: "
                         f"the open batten's ends meet at the first point at a {corner:.3g} deg "
                         "corner; set Closed for a closed batten through them")
+    if not closed and not returns and start is None and end is None:
+        cautions.extend(closing_hint(xy, sp))
     if advise:
         cautions.extend(batten_cautions(sp, mode))
     for j, name in ((0, "first"), (-1, "last")):
