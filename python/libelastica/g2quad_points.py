@@ -183,8 +183,8 @@ def _built_locally(build, source, R: np.ndarray, coverage_error):
         exc.result = _moved(exc.result, R)
         raise
     finally:
-        for w in said:
-            warnings.warn(w.message, stacklevel=4)
+        for w in said:      # (1 here, 2 g2_quadratic, 3 its caller)
+            warnings.warn(w.message, stacklevel=3)
 
 
 def _end_curvatures(given, is_curve: bool):

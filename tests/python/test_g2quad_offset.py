@@ -90,3 +90,21 @@ def test_near_the_origin_nothing_is_moved():
     assert not np.any(_local_origin(np.array([[0.0, 0.0], [3.0, 4.0]]) + 60.0))
     R = _local_origin(np.array([[0.0, 0.0], [3.0, 4.0]]) + OFF)
     assert np.all(R % 4.0 == 0.0) and np.all(np.abs(R - OFF) <= 2.0)
+
+
+
+def test_a_warning_at_a_survey_offset_names_the_callers_line():
+    # the local build's warnings are said again at the caller of g2_quadratic, the line the
+    # origin's name (they named the caller's caller: stacklevel one frame too far)
+    t = np.linspace(0, 2 * np.pi, 10, endpoint=False)
+    r = 30 + 8 * np.cos(2 * t)
+    pts = np.c_[1.2 * r * np.cos(t), r * np.sin(t) - 14 * np.cos(t) ** 2 * (np.sin(t) > 0)]
+    where = []
+    for src in (pts, pts + OFF):    # the bean of test_g2quad_seam: warned at its seam
+        sp = el.elastic_spline(src, closed=True)
+        with warnings.catch_warnings(record=True) as said:
+            warnings.simplefilter("always")
+            el.g2_quadratic(sp, 24)
+        assert said
+        where.append({(w.filename, w.lineno) for w in said})
+    assert where[0] == where[1] and {f for f, _ in where[1]} == {__file__}, where
