@@ -701,7 +701,7 @@ def g2_quadratic(curve_or_points, n: int, samples_per_vertex: int = 20, tangents
         duck = _seam_duck(curve_or_points)
         other = ("another one (np.roll), away from an inflection and with room for 7 edges to "
                  "the next" if duck is None or duck[0] == 0 or duck[1] <= duck[2] else
-                 f"duck {duck[0]} (np.roll(points, -{duck[0]})): {duck[1]:.3g} of the length "
+                 f"duck {duck[0]} (np.roll(points, -{duck[0]}, axis=0)): {duck[1]:.3g} of the length "
                  f"from the nearest inflection, duck 0 {duck[2]:.3g}")
         missed.append(("seam", seam[0], (
             f"the closed outline has a corner where it closes (point 0), relative "
