@@ -11,7 +11,7 @@ from typing import Optional
 
 import numpy as np
 
-from ._ffi import DomainError, as_points
+from ._ffi import DomainError, as_points, as_real
 from .bspline import BSpline
 from .core import SmoothElastica
 
@@ -201,14 +201,9 @@ def _end_curvatures(given, is_curve: bool):
         pair = ()
     if len(pair) != 2:
         raise ValueError(f"g2_quadratic: end_curvatures must be (k_start, k_end), got {given!r}")
-    out = []
-    for k in pair:
-        if k is not None:
-            k = float(k)
-            if not math.isfinite(k):
-                raise ValueError(f"g2_quadratic: end_curvatures must be finite, got {given!r}")
-        out.append(k)
-    return tuple(out)
+    # (as_real: a finite real each, ValueError naming it for a string, complex, bool, array)
+    return tuple(None if k is None else as_real(k, f"g2_quadratic: end_curvatures[{i}]")
+                 for i, k in enumerate(pair))
 
 
 def _seam_duck(c):

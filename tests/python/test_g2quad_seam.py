@@ -116,8 +116,9 @@ def test_closed_samples_given_the_seams_curvature_close_g2(n):
 
 def test_end_curvatures_are_checked():
     xy, tan, k = _periodic_egg(24)
-    for bad in ((k,), (k, math.nan), "ab"):
-        with pytest.raises(ValueError):
+    for bad in ((k,), (k, math.nan), "ab", (1j, k), (k, [k]), (True, k), (object(), None)):
+        # (a complex, a list, an object raised TypeError from float(); "ab" float's words)
+        with pytest.raises(ValueError, match="end_curvatures"):
             el.g2_quadratic(xy, 24, tangents=tan, end_curvatures=bad)
     with pytest.raises(ValueError):
         el.g2_quadratic(el.SmoothElastica(0, 0, 0, 1, 0.5, 0, 2), 12, end_curvatures=(1, 1))
