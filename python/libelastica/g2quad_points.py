@@ -164,10 +164,21 @@ def _local_source(source, is_curve: bool):
 
 
 def _moved(g, R: np.ndarray):
-    """A G2Quadratic built in a local frame moved back by R: its poles, polyline and ends."""
+    """A G2Quadratic built in a local frame moved back by R: its poles, polyline and ends;
+    a closed one's seam_bound widened to what the poles moved back resolve (_seam_rounding,
+    relative to the seam's own curvature): the seam figures are the local build's (~1e-14),
+    but the poles handed back carry the offset's rounding (a 1.3 x 1 oval at (512345.678,
+    5012345.432), 64 edges: their seam's curvature jump 6.4e-9 relative against a bound of
+    1e-9 before)."""
+    from .g2ends import _seam_rounding      # (g2ends -> affine -> here: not at import)
     bs = [BSpline(b.degree, b.poles + R, b.knots, b.mults, b.max_deviation) for b in g.bsplines]
     poly = dataclasses.replace(g.polyline, points=g.polyline.points + R)
-    return dataclasses.replace(g, bsplines=bs, polyline=poly, ends=np.asarray(g.ends) + R)
+    bound = g.seam_bound
+    if g.seam_angle is not None and bound is not None:
+        k = abs(float(g.bsplines[0].curvature(g.bsplines[0].knots[:1])[0]))
+        bound = tuple(max(b, r) for b, r in zip(bound, _seam_rounding(bs[0], bs[-1], k)))
+    return dataclasses.replace(g, bsplines=bs, polyline=poly, ends=np.asarray(g.ends) + R,
+                               seam_bound=bound)
 
 
 def _built_locally(build, source, R: np.ndarray, coverage_error):
