@@ -11,9 +11,13 @@
   and the live preview had taken its prefix '1' (ResampleStep 6 -> 1 mm) while the box
   showed the refused text: now the property stays at the box's last text that stood.
 
+And '=' in an integer box (Degree) opens the editor on its property as FreeCAD's
+Gui::IntSpinBox does, bound to it with the same Cancel / OK / Undo (integer_editor).
+
 Screenshots: gui_typed_equals_editor.png (the editor '=' opened over Resample),
 gui_typed_division_by_zero.png (the Fit panel refusing '1/0'), gui_typed_bound.png (Resample
-bound to Sheet.step by it: 8 mm, read-only, marked)."""
+bound to Sheet.step by it: 8 mm, read-only, marked), gui_typed_integer_editor.png and
+gui_typed_integer_bound.png (Degree bound to a cell)."""
 import numpy as np
 
 import FreeCAD as App
@@ -51,6 +55,16 @@ def _editor(box):
              if d.metaObject().className() == "Gui::Dialog::DlgExpressionInput"
              and d.isVisible()]
     return found[0] if found else None
+
+
+def _in_view(box):
+    """The task panel scrolled to ``box`` (for a screenshot)."""
+    area = box.parentWidget()
+    while area is not None and not isinstance(area, QtGui.QScrollArea):
+        area = area.parentWidget()
+    if area is not None:
+        area.ensureWidgetVisible(box)
+    G.pump(10)
 
 
 def _panel(fit):
@@ -245,6 +259,74 @@ def stiffness_editor(doc, dots):
             f"F2: Cancel unbinds it ({sp.Stiffness}, {dict(sp.ExpressionEngine)})")
 
 
+def integer_editor(doc, fit):
+    """'=' in an integer box (the B-spline's Degree) opens the expression editor on its
+    property, as FreeCAD's Gui::IntSpinBox: its OK binds Degree (the box read-only, marked,
+    showing the cell's value), the panel's Cancel unbinds it, and a binding kept by OK is one
+    Undo step. The box had typed nothing and bound nothing."""
+    from freecad.elastica import taskpanels as T
+    sheet = doc.addObject("Spreadsheet::Sheet", "Degrees")
+    sheet.set("A1", "5")
+    sheet.setAlias("A1", "order")
+    model, fit.Model = fit.Model, "smooth"      # (a discrete fit's Degree does not apply)
+    doc.recompute()
+    before = fit.Degree
+    for keep in (False, True):
+        panel = _panel(fit)
+        box = panel.degree
+        _in_view(box)
+        box.setFocus()
+        box.selectAll()
+        _key(box, "=")
+        editor = _editor(box)
+        G.check(editor is not None and box.text() == str(before),
+                f"'=' in the Degree box opens FreeCAD's expression editor, '=' not typed "
+                f"({box.text()!r})")
+        line = editor.findChild(QtGui.QLineEdit, "expression")
+        G.check(line is not None and line.text() == str(before),
+                f"the editor opens holding Degree {before} ({line.text() if line else None!r})")
+        line.setText("Degrees.order")
+        G.pump(10)
+        if not keep:
+            G.screenshot("gui_typed_integer_editor.png")
+        editor.findChild(QtGui.QPushButton, "okBtn").click()
+        G.wait()
+        G.check(dict(fit.ExpressionEngine).get("Degree") == "Degrees.order" and fit.Degree == 5
+                and box.value() == 5 and box.isReadOnly() and len(box.lineEdit().actions()) == 1
+                and "Degrees.order" in box.toolTip() and not fit.Status.startswith("error"),
+                f"its OK binds Degree to the cell: 5, the box read-only and marked, solved "
+                f"({fit.Degree}, {box.text()!r}, {dict(fit.ExpressionEngine)}, {fit.Status[:40]!r})")
+        if not keep:
+            G.screenshot("gui_typed_integer_bound.png")
+            box.setFocus()
+            _key(box, "=")
+            editor = _editor(box)
+            line = editor and editor.findChild(QtGui.QLineEdit, "expression")
+            G.check(line is not None and line.text() == "Degrees.order",
+                    f"'=' in the bound Degree box opens the editor holding its expression "
+                    f"({line.text() if line else None!r})")
+            editor.reject()
+            G.wait()
+            panel.reject()
+            G.wait()
+            G.check(not T.CURRENT and "Degree" not in dict(fit.ExpressionEngine)
+                    and fit.Degree == before,
+                    f"the panel's Cancel unbinds Degree: {before} again ({fit.Degree}, "
+                    f"{dict(fit.ExpressionEngine)})")
+        else:
+            G.check(panel.accept() and not T.CURRENT
+                    and dict(fit.ExpressionEngine).get("Degree") == "Degrees.order",
+                    f"OK keeps Degree's binding ({dict(fit.ExpressionEngine)})")
+            G.wait()
+            doc.undo()
+            doc.recompute()
+            G.check("Degree" not in dict(fit.ExpressionEngine) and fit.Degree == before,
+                    f"Undo takes the panel's binding of Degree back ({fit.Degree}, "
+                    f"{dict(fit.ExpressionEngine)})")
+    fit.Model = model
+    doc.recompute()
+
+
 def run_all(smoke):
     global G
     G = smoke
@@ -260,6 +342,7 @@ def run_all(smoke):
     doc.recompute()
     division_by_zero(doc, fit)
     equals_opens_the_editor(doc, fit)
+    integer_editor(doc, fit)
     stiffness_editor(doc, dots)
     Gui.Selection.clearSelection()
     App.closeDocument(doc.Name)

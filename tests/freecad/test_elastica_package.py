@@ -17,7 +17,8 @@ class PackageTest(unittest.TestCase):
     def test_namespace_layout(self):
         self.assertFalse(os.path.exists(os.path.join(WB, "freecad", "__init__.py")))
         for f in ("__init__.py", "init_gui.py", "commands.py", "features.py", "taskpanels.py",
-                  "blend_panel.py", "panelbase.py", "panelexpressions.py", "spinboxes.py", "preferences.py",
+                  "blend_panel.py", "panelbase.py", "panelexpressions.py", "panelwatch.py", "spinboxes.py",
+                  "preferences.py",
                   "sources.py",
                   "viewproviders.py",
                   "geometry.py", "nearest.py", "proxy.py", "fit.py", "fit_core.py", "fit_ends.py",
@@ -39,7 +40,8 @@ class PackageTest(unittest.TestCase):
         modules (and what they share) import neither GUI modules nor Qt; the GUI
         reaches them, never the other way (view providers come through a hook)."""
         import ast
-        gui = {"taskpanels", "blend_panel", "panelbase", "panelexpressions", "spinboxes", "viewproviders",
+        gui = {"taskpanels", "blend_panel", "panelbase", "panelexpressions", "panelwatch", "spinboxes",
+               "viewproviders",
                "commands", "init_gui", "preferences", "FreeCADGui", "PySide", "pivy"}
         for f in ("proxy", "geometry", "nearest", "sources", "fit", "fit_core", "fit_ends",
                   "fit_shape", "blend", "blend_g2", "blend_start", "spline", "spline_solve", "comb", "ellblend",

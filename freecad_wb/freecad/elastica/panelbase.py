@@ -2,8 +2,8 @@
 Sketcher panels: ``Panel`` (fields bound live to a feature's properties, the
 delayed recompute, enabled fields, result text, the view kept on the feature, OK
 and Cancel through the document's undo transaction); its spin boxes are in
-spinboxes.py, its fields bound to expressions (the f(x) mark) in panelexpressions.py,
-the panels of the features in taskpanels.py."""
+spinboxes.py, its fields bound to expressions (the f(x) mark) in panelexpressions.py, its
+document observer in panelwatch.py, the panels of the features in taskpanels.py."""
 from __future__ import annotations
 
 import FreeCAD as App
@@ -16,10 +16,11 @@ from .containers import CONTAINERS
 from .geometry import global_shape, is_sketch, sketch_curves
 from .okcopy import Attempt, Unsolved, copy_code
 from .panelexpressions import ExpressionFields
+from .panelwatch import Watch
 from .proxy import (EDGE_ENDS, InputProblem, abort_transaction, note_changes, note_values,
                     save_note, saved_note, said as proxy_said)
 from .recording import edit_lines, edit_state
-from .spinboxes import BAD_RGB, DecadeBox, NumberBox
+from .spinboxes import BAD_RGB, DecadeBox, IntBox, NumberBox
 from .units import length_text, say, unit_names
 
 CURRENT = []        # the open panel, if any (scripts and the GUI smoke test drive it)
@@ -59,62 +60,6 @@ def _buttons(*names):
         return flags.value
 
 
-class _Watch:
-    """A document observer that closes a panel whose feature leaves its document (Undo
-    of the command that made it, a deletion in the tree): the panel stayed open on a
-    feature that was gone, and its OK reported success with nothing kept. And one whose
-    document is undone or redone while it is open (Edit > Undo is active during a task
-    dialog in FreeCAD 0.20, whatever the dialog says): the undo takes the panel's open
-    transaction with it (its edits, or the step before when it had none), so the panel
-    stayed open on values the document no longer had, its later edits outside any
-    transaction, and Cancel could revert none of them. The panel closes then, the
-    document as the undo left it, as FreeCAD's own edits end when their transaction
-    goes."""
-
-    def __init__(self, panel):
-        self.panel = panel
-
-    def mine(self, doc):
-        try:
-            return doc.Name == self.panel.doc_name
-        except Exception:  # a document half torn down: not ours to judge
-            return False
-
-    def slotDeletedObject(self, obj):
-        p = self.panel
-        try:
-            mine = obj.Document.Name == p.doc_name and obj.Name == p.name
-        except Exception:  # an object half torn down: not ours to judge
-            mine = False
-        if mine:
-            p.lost("undone or deleted")
-
-    def slotUndoDocument(self, doc):
-        if self.mine(doc):
-            self.panel.lost("Undo took its edit back")
-
-    def slotRedoDocument(self, doc):
-        if self.mine(doc):
-            self.panel.lost("Redo replaced its edit")
-
-    def slotDeletedDocument(self, doc):
-        # File > Close (its GUI document gone, FreeCAD's unsetEdit closed a panel in edit
-        # mode): the panel stayed on the Start page, its OK and Cancel on a deleted document
-        if self.mine(doc):
-            self.panel.lost("its document closed")
-
-    def slotRecomputedDocument(self, doc):
-        # a recompute not the panel's (a cell its feature is bound to changed): it follows
-        if self.mine(doc):
-            QtCore.QTimer.singleShot(0, self.panel.follow_recompute)
-
-    def slotCommitTransaction(self, doc):
-        # a command run while the panel is open commits every pending transaction as it
-        # opens its own (Std_Delete: App::Application::setActiveTransaction)
-        if self.mine(doc):
-            self.panel.committed_by_other()
-
-
 class Panel(ExpressionFields):
     """Shared machinery: bound fields, the delayed recompute, result text, the undo
     transaction. Subclasses build their boxes in ``build`` and return the result
@@ -149,7 +94,7 @@ class Panel(ExpressionFields):
         self._note, self._note_for = note or saved_note(obj), note_values(obj)
         self.doc = obj.Document
         self.name, self.doc_name = obj.Name, obj.Document.Name
-        self.watch = _Watch(self)
+        self.watch = Watch(self)
         App.addDocumentObserver(self.watch)
         self.created = created          # a command made it: its transaction is still open
         # the panel's transaction (the command's, or this edit's) and how many of its pieces
@@ -277,15 +222,16 @@ class Panel(ExpressionFields):
         return box, value
 
     def integer(self, grid, label, prop, lo, hi, tip, when=None):
-        box = QtGui.QSpinBox()
-        box.setRange(lo, hi)
+        """A spin box bound live to the integer property prop ('=' opens the expression
+        editor on it, as FreeCAD's integer boxes: spinboxes.IntBox)."""
+        box = IntBox(lo, hi)
         box.blockSignals(True)
         box.setValue(max(lo, min(hi, int(getattr(self.obj, prop)))))
         box.blockSignals(False)
-        box.setKeyboardTracking(True)
         box.valueChanged.connect(lambda v: self.set(prop, int(v)))
         self.typed_in(box)
         self.row(grid, label, box, tip)
+        self.mark_bound(box, prop)
         if when:
             self.enablers.append((box, when))
         return box

@@ -1,6 +1,7 @@
 """Task-panel fields bound to expressions (the f(x) mark), as FreeCAD's own boxes show
 and edit them (a Pad's Length): ``ExpressionFields``, the part of panelbase.Panel that
-marks a box whose property an expression sets (spinboxes.NumberBox.bind_mark) and opens
+marks a box whose property an expression sets (spinboxes.Bindable.bind_mark: number and
+integer boxes) and opens
 FreeCAD's expression editor from its mark or '=' typed in the box; and keeps a text the
 box refuses from reaching the property (hold_back)."""
 from __future__ import annotations
@@ -40,7 +41,7 @@ class ExpressionFields:
         if box.isReadOnly():
             return
         if not box.problem():
-            self.set(prop, float(box.value()))
+            self.set(prop, box.value())         # a float, an integer box's int
         elif box.settled is not None:
             self.set(prop, float(box.settled))
 
@@ -56,17 +57,22 @@ class ExpressionFields:
             return                              # (one editor at a time)
         self.flush()
         self.hold()                             # its edit in the panel's transaction
-        helper = Gui.UiLoader().createWidget("Gui::QuantitySpinBox", box)
+        integer = isinstance(box, QtGui.QSpinBox)
+        if integer:     # (0.20's ExpressionBinding opened no editor from a Gui::IntSpinBox)
+            helper = Gui.UiLoader().createWidget("Gui::QuantitySpinBox", box)
+            helper.setProperty("rawValue", float(getattr(self.obj, prop)))
+        else:
+            helper = Gui.UiLoader().createWidget("Gui::QuantitySpinBox", box)
+            # the property's unit, as FreeCAD's box of it has: without it the editor said
+            # 'Result: 8.00 mm (Warning: unit discarded)' of a length. Not a stiffness (N
+            # mm^2, a plain number): FreeCAD's mass unit is kg, its N*mm^2 1000 of ours (1e6
+            # N mm^2 was '1e9 mm^3*kg/s^2' there), and 0.20 has no unit of it to write
+            unit = PARSED_UNIT.get(box.unit)
+            if unit and "N" not in unit:
+                helper.setProperty("unit", unit)
+            # its value: FreeCAD's editor opens on an unbound box holding the box's text
+            helper.setProperty("rawValue", float(getattr(self.obj, prop)))
         helper.setGeometry(box.rect())          # the dialog opens over the box
-        # the property's unit, as FreeCAD's box of it has: without it the editor said
-        # 'Result: 8.00 mm (Warning: unit discarded)' of a length. Not a stiffness (N mm^2,
-        # a plain number): FreeCAD's mass unit is kg, its N*mm^2 1000 of ours (1e6 N mm^2
-        # was '1e9 mm^3*kg/s^2' there), and 0.20 has no unit of it to write
-        unit = PARSED_UNIT.get(box.unit)
-        if unit and "N" not in unit:
-            helper.setProperty("unit", unit)
-        # its value: FreeCAD's editor opens on an unbound box holding the box's text
-        helper.setProperty("rawValue", float(getattr(self.obj, prop)))
         helper.hide()
         self._binding = Gui.ExpressionBinding(helper)
         self._binding.bind(self.obj, prop)
@@ -76,6 +82,9 @@ class ExpressionFields:
         if dialog is None:
             helper.deleteLater()
             return
+        line = dialog.findChild(QtGui.QLineEdit, "expression")
+        if integer and line is not None and not self.expression(prop):
+            line.setText(str(getattr(self.obj, prop)))   # '3' as Gui::IntSpinBox, not '3.00'
         # after the helper's own slot (connected first) has set the expression
         dialog.finished.connect(lambda _result: QtCore.QTimer.singleShot(
             0, lambda: self.expression_edited(box, prop, helper)))
@@ -98,7 +107,7 @@ class ExpressionFields:
         self.say_bad_input()        # the refused text it replaced no longer said
 
     def follow_recompute(self):
-        """After a recompute of the document (panelbase._Watch): the boxes of bound properties
+        """After a recompute of the document (panelwatch.Watch): the boxes of bound properties
         show their values of now and the results follow (refresh). A cell the feature is bound
         to changed while its panel was open: the feature was solved again but the panel kept
         the old tension, length and solutions (QA21gui F2). Its own preview's recompute too:

@@ -50,7 +50,57 @@ def _in_unit(text, unit, plain=1.0):
     return q.Value / ref.Value
 
 
-class NumberBox(QtGui.QDoubleSpinBox):
+class Bindable:
+    """What a panel's box bound to a property shares with FreeCAD's boxes (Gui::
+    ExpressionSpinBox, which its Quantity and integer boxes derive from): '=' opens the
+    expression editor on the property, and a bound property's box is read-only and marked."""
+
+    _mark = None                         # the bound-expression mark's action (bind_mark)
+    # FreeCAD's expression editor on the property the box sets (panelexpressions: a box of
+    # a panel bound to a property), or None
+    open_editor = None
+
+    def keyPressEvent(self, event):
+        # '=' opens the expression editor, not typed, as in FreeCAD's boxes bound to a
+        # property (Gui::ExpressionSpinBox::handleKeyEvent; read-only ones too): '=2*3'
+        # was read once as 6 mm and '=Sheet.step' refused, the property bound to nothing;
+        # an integer box ignored it (Gui::IntSpinBox opens the editor)
+        if event.text() == "=" and self.open_editor is not None:
+            event.accept()
+            self.open_editor()
+            return
+        super().keyPressEvent(event)
+
+    def bind_mark(self, expression, edit=None):
+        """Bound to a property's ``expression``: read-only, FreeCAD's bound-expression
+        mark in the box and the expression in its tooltip, as its own Quantity boxes show
+        a bound property (the panel does not write it: set() skips bound properties).
+        ``edit``: what clicking the mark does (FreeCAD's expression editor,
+        panelexpressions.ExpressionFields.edit_expression),
+        as the f(x) mark of FreeCAD's boxes."""
+        if self._mark is None:
+            self._tip = self.toolTip()
+            self._mark = self.lineEdit().addAction(QtGui.QIcon(":/icons/bound-expression.svg"),
+                                                   QtGui.QLineEdit.TrailingPosition)
+            edit = edit or self.open_editor
+            if edit is not None:
+                self._mark.triggered.connect(edit)
+        self.setReadOnly(True)
+        self.setToolTip(f"Bound to the expression ={expression} (read-only here: click its "
+                        "f(x) mark to change or clear it).\n" + self._tip)
+
+    def unbind_mark(self):
+        """No longer bound (its expression cleared): writable, unmarked, its own tooltip."""
+        if self._mark is not None:
+            self.lineEdit().removeAction(self._mark)
+            self._mark = None
+            self.setReadOnly(False)
+            self.setToolTip(self._tip)
+
+
+
+
+class NumberBox(Bindable, QtGui.QDoubleSpinBox):
     """A spin box that shows its value as typed ('0.001', '2.5e-07', not '0.00'; a length as
     units.box_text writes it: '0.0000394 in', not '3.93701e-05 in'; any other in fixed
     notation from 1e-6 to 1e6: a tension or curvature to 4 digits, its whole part kept, the
@@ -238,50 +288,36 @@ class NumberBox(QtGui.QDoubleSpinBox):
             self.lineEdit().setText(text)      # still marked: OK says why and refuses it
             self.editingFinished.emit()        # Qt's came with its own text back
 
-    _mark = None                         # the bound-expression mark's action (bind_mark)
-    # FreeCAD's expression editor on the property the box sets (panelexpressions: a box of
-    # a panel bound to a property), or None
-    open_editor = None
-
-    def keyPressEvent(self, event):
-        # '=' opens the expression editor, not typed, as in FreeCAD's boxes bound to a
-        # property (Gui::ExpressionSpinBox::handleKeyEvent; read-only ones too): '=2*3'
-        # was read once as 6 mm and '=Sheet.step' refused, the property bound to nothing
-        if event.text() == "=" and self.open_editor is not None:
-            event.accept()
-            self.open_editor()
-            return
-        super().keyPressEvent(event)
-
-    def bind_mark(self, expression, edit=None):
-        """Bound to a property's ``expression``: read-only, FreeCAD's bound-expression
-        mark in the box and the expression in its tooltip, as its own Quantity boxes show
-        a bound property (the panel does not write it: set() skips bound properties).
-        ``edit``: what clicking the mark does (FreeCAD's expression editor,
-        panelexpressions.ExpressionFields.edit_expression),
-        as the f(x) mark of FreeCAD's boxes."""
-        if self._mark is None:
-            self._tip = self.toolTip()
-            self._mark = self.lineEdit().addAction(QtGui.QIcon(":/icons/bound-expression.svg"),
-                                                   QtGui.QLineEdit.TrailingPosition)
-            edit = edit or self.open_editor
-            if edit is not None:
-                self._mark.triggered.connect(edit)
-        self.setReadOnly(True)
-        self.setToolTip(f"Bound to the expression ={expression} (read-only here: click its "
-                        "f(x) mark to change or clear it).\n" + self._tip)
-
-    def unbind_mark(self):
-        """No longer bound (its expression cleared): writable, unmarked, its own tooltip."""
-        if self._mark is not None:
-            self.lineEdit().removeAction(self._mark)
-            self._mark = None
-            self.setReadOnly(False)
-            self.setToolTip(self._tip)
-
 
 class DecadeBox(NumberBox):
     """A tolerance: each arrow step (or wheel notch) multiplies or divides by 10."""
 
     def stepBy(self, steps):
         self.setValue(self.value() * 10.0 ** steps)
+
+
+class IntBox(Bindable, QtGui.QSpinBox):
+    """An integer box (a B-spline's Degree, the comb's Teeth) as FreeCAD's Gui::IntSpinBox:
+    '=' opens the expression editor on its property, bound it is read-only and marked
+    (Bindable). Qt's validator takes only integers in its range: no text to refuse."""
+
+    settled = None
+    keep_bad_text = False
+
+    def __init__(self, lo, hi, tip=""):
+        super().__init__()
+        self.setRange(lo, hi)
+        self.setKeyboardTracking(True)
+        self.setToolTip(tip)
+
+    def setValue(self, value):
+        """An integer property's value (a float from an expression: FreeCAD rounds it)."""
+        super().setValue(int(round(value)))
+
+    @staticmethod
+    def problem():
+        """'' (panelexpressions asks the boxes why their text is refused)."""
+        return ""
+
+    def _mark_input(self, _text=None):
+        """Nothing to mark (problem)."""
