@@ -27,6 +27,7 @@ import FreeCADGui as Gui
 from PySide import QtCore, QtGui
 
 import elastica_samples as S
+from freecad.elastica.units import number_text
 
 G = None            # the gui_smoke module (check, wait, screenshot, ...)
 
@@ -106,12 +107,12 @@ def note_follows_the_length(panel):
     said = panel.warning[1].text() if panel.warning[0].isVisible() else ""
     G.screenshot("gui_blend_note_typed.png")
     G.check(b.Length.Value == 200.0 and not b.Status.startswith("error") and
-            "151 mm" not in said and "No free batten" not in said,
+            "151.00 mm" not in said and "No free batten" not in said,
             f"a length typed over the command's: its note goes ({b.Length}, {said!r})")
     retype(panel.length, "151 mm")
     G.wait()
     G.check(b.Length.Value == 151.0 and panel.warning[0].isVisible() and
-            "solved for a length instead, 151 mm" in panel.warning[1].text(),
+            "solved for a length instead, 151.00 mm" in panel.warning[1].text(),
             f"the command's length typed back: its note again ({panel.warning[1].text()!r})")
 
 
@@ -128,7 +129,7 @@ def note_kept(doc, b):
         return panel, (panel.warning[1].text() if panel.warning[0].isVisible() else "")
 
     panel, said = reopened_note()
-    G.check("No free batten (tension 0) joins these ends: solved for a length instead, 151 mm"
+    G.check("No free batten (tension 0) joins these ends: solved for a length instead, 151.00 mm"
             in said, f"the note said again in a panel opened later: {said!r}")
     G.screenshot("gui_blend_note_kept.png")
     panel.reject()
@@ -143,7 +144,7 @@ def note_kept(doc, b):
     G.wait()
     panel = T.CURRENT[0]
     said = panel.warning[1].text() if panel.warning[0].isVisible() else ""
-    G.check("solved for a length instead, 151 mm" in said, f"and after reopening: {said!r}")
+    G.check("solved for a length instead, 151.00 mm" in said, f"and after reopening: {said!r}")
     panel.mode.setCurrentIndex(1)                     # a tension: the designer's choice now
     G.wait()
     G.check(b2.Mode == "tension" and not panel.warning[0].isVisible(),
@@ -177,10 +178,10 @@ def ends_toggled(doc, sk, right, left):
     said = panel.warning[1].text()
     G.check(ends_of(b) == TOPS and b.Mode == "length" and b.Length.Value == 151.0
             and not b.Status.startswith("error") and panel.mode.currentIndex() == 0
-            and panel.length.isEnabled() and panel.length.text() == "151 mm",
+            and panel.length.isEnabled() and panel.length.text() == "151.00 mm",
             f"ends no free batten joins: by length {b.Length}, box {panel.length.text()!r} "
             f"({b.Status})")
-    G.check(panel.warning[0].isVisible() and "No free batten" in said and "151 mm" in said,
+    G.check(panel.warning[0].isVisible() and "No free batten" in said and "151.00 mm" in said,
             f"ends no free batten joins: the panel says why by length ({said})")
     note_said_again(panel)
     G.screenshot("gui_blend_ends_by_length.png")
@@ -189,7 +190,7 @@ def ends_toggled(doc, sk, right, left):
     panel.end2.click()
     G.wait()
     G.check(ends_of(b) == BOTTOMS and b.Mode == "tension" and b.Tension == 0.0 and
-            panel.mode.currentIndex() == 1 and panel.tension.text() == "0 1/mm\u00b2" and
+            panel.mode.currentIndex() == 1 and panel.tension.text() == "0.00 1/mm\u00b2" and
             not panel.warning[0].isVisible() and not b.Status.startswith("error"),
             f"back to ends the free batten joins: the free batten again ({b.Mode}, "
             f"{panel.tension.text()!r}, {b.Status})")
@@ -218,7 +219,7 @@ def ends_toggled(doc, sk, right, left):
     panel = T.CURRENT[0]
     panel.mode.setCurrentIndex(0)
     G.wait()
-    G.check(b.Mode == "length" and b.Length.Value == 151.0 and panel.length.text() == "151 mm"
+    G.check(b.Mode == "length" and b.Length.Value == 151.0 and panel.length.text() == "151.00 mm"
             and not b.Status.startswith("error") and "No free batten" in panel.warning[1].text(),
             f"'a length' without one: the command's length, said ({b.Length}, {b.Status})")
     panel.accept()
@@ -247,7 +248,7 @@ def bound_tension(doc, b):
     retype(box, "0.003")
     key(box.lineEdit(), QtCore.Qt.Key_Tab)
     G.wait()
-    G.check(box.text() == "0.001 1/mm\u00b2" and b.Tension == 0.001,
+    G.check(box.text() == "0.0010 1/mm\u00b2" and b.Tension == 0.001,
             f"typing in a bound box changes nothing ({box.text()!r}, {b.Tension})")
     Gui.SendMsgToActiveView("ViewTop")
     G.screenshot("gui_blend_bound.png")
@@ -271,13 +272,13 @@ def unit_schemas(doc, b):
     try:
         said_in_the_schema_of_now(doc, b, prefs)
         said_after_undo(doc, b, prefs)
-        # the Tolerance's 0.001 mm as FreeCAD's boxes write numbers, fixed, to its digits
+        # the Tolerance's 0.001 mm as FreeCAD's boxes write numbers at 2 decimals, fixed, to 2 digits
         # ('3.93701e-05 in' before; a Gui::QuantitySpinBox shows '0.00 in'), 151 mm as its
         # '5.94 in' (it showed '5.94488 in')
-        for schema, length, tol in ((2, '5.94 "', "0.0394 thou"),   # US customary: FreeCAD's marks
-                                    (3, "5.94 in", "0.0000394 in"),
-                                    (4, "15.1 cm", "0.0001 cm"),
-                                    (5, '6"', "0.0000394 in")):
+        for schema, length, tol in ((2, '5.94 "', "0.039 thou"),   # US customary: FreeCAD's marks
+                                    (3, "5.94 in", "0.000039 in"),
+                                    (4, "15.10 cm", "0.00010 cm"),
+                                    (5, '6"', "0.000039 in")):
             prefs.SetInt("UserSchema", schema)
             App.Units.setSchema(schema)
             Gui.ActiveDocument.setEdit(b.Name)
@@ -307,7 +308,7 @@ def unit_schemas(doc, b):
                         f"typed '7 in': shows {typed!r}, Length {b.Length}")
                 key(panel.length.lineEdit(), QtCore.Qt.Key_Tab)
                 G.wait()
-                G.check(panel.length.text() == "7 in" and abs(b.Length.Value - 177.8) < 1e-9,
+                G.check(panel.length.text() == "7.00 in" and abs(b.Length.Value - 177.8) < 1e-9,
                         f"after Tab: {panel.length.text()!r}")
                 imperial_texts_and_steps(b, panel)
                 Gui.SendMsgToActiveView("ViewTop")
@@ -379,7 +380,7 @@ def typed_after_a_step(doc, b):
         key(panel.length.lineEdit(), QtCore.Qt.Key_Up)
         G.wait()
         shown = panel.length.text()
-        G.check(shown == "10 m" and b.Length.Value == 10000.0,
+        G.check(shown == "10.00 m" and b.Length.Value == 10000.0,
                 f"Up from 9999 mm: {shown!r}, Length {b.Length}")
         panel.length.lineEdit().selectAll()
         key(panel.length.lineEdit(), QtCore.Qt.Key_Delete)
@@ -400,7 +401,7 @@ def typed_after_a_step(doc, b):
         key(panel.tol.lineEdit(), QtCore.Qt.Key_Delete)
         keys(panel.tol.lineEdit(), "200")
         G.wait()
-        G.check(shown == "100 nm" and abs(b.Tolerance.Value - 2e-4) < 1e-15,
+        G.check(shown == "100.00 nm" and abs(b.Tolerance.Value - 2e-4) < 1e-15,
                 f"'200' over {shown!r} is 200 nm: Tolerance {b.Tolerance}")
         G.screenshot("gui_blend_typed_after_step.png")
     finally:
@@ -486,7 +487,7 @@ def note_said_again(panel):
     try:
         panel.refresh()
         said = panel.warning[1].text()
-        G.check("instead, 5.94488 in (1.5 \u00d7 the 3.957 in between" in said and "mm" not in said
+        G.check("instead, 5.94 in (1.5 \u00d7 the 3.96 in between" in said and "mm" not in said
                 and panel.obj.Status == before, f"the note said again in inches: {said!r}")
     finally:
         App.Units.setSchema(old)
@@ -505,7 +506,7 @@ def comb_in_the_schema(doc, b):
         G.wait()
         panel = T.CURRENT[0]
         text, box = panel.result.text(), panel.scale.text()
-        want = f"scale {comb.UsedScale / 25.4 ** 2:.4g} in\u00b2; ok"
+        want = f"scale {number_text(comb.UsedScale / 25.4 ** 2)} in\u00b2; ok"
         G.check(text == want and box == "automatic", f"comb under Imperial: {text!r} "
                 f"(want {want!r}), Scale box {box!r}")
         G.screenshot("gui_comb_imperial.png")
@@ -522,7 +523,8 @@ def imperial_texts_and_steps(b, panel):
     +1 mm)."""
     tension = panel.tension.text()
     G.check(tension.endswith(" 1/in\u00b2") and
-            tension == f"{panel.tension.value() * 25.4 ** 2:.4g} 1/in\u00b2" and "e" not in tension,
+            tension == f"{number_text(panel.tension.value() * 25.4 ** 2)} 1/in\u00b2"
+            and "e" not in tension,
             f"the Tension box in 1/in\u00b2: {tension!r} ({panel.tension.value()} 1/mm\u00b2)")
     tips = (panel.length.toolTip(), panel.tension.toolTip(), panel.tol.toolTip())
     G.check("(in)" in tips[0] and "(1/in\u00b2)" in tips[1] and "(in)" in tips[2]
@@ -542,7 +544,7 @@ def imperial_texts_and_steps(b, panel):
     panel.length.setFocus()
     key(panel.length.lineEdit(), QtCore.Qt.Key_Up)
     G.wait()
-    G.check(abs(b.Length.Value - 177.8) < 1e-9 and panel.length.text() == "7 in",
+    G.check(abs(b.Length.Value - 177.8) < 1e-9 and panel.length.text() == "7.00 in",
             f"Up steps 1 in: Length {b.Length}, box {panel.length.text()!r}")
     key(panel.length.lineEdit(), QtCore.Qt.Key_Down)
     key(panel.length.lineEdit(), QtCore.Qt.Key_Down)
@@ -604,7 +606,7 @@ def tension_mode_and_g2_reach(doc, sk, right, left):
     G.wait()
     G.check(b.Mode == "tension" and sigma != 0.0 and b.Tension == sigma and
             not b.Status.startswith("error") and abs(b.BlendLength - length) < 1e-6 and
-            panel.tension.text() != "0 1/mm\u00b2",
+            panel.tension.text() != "0.00 1/mm\u00b2",
             f"'a tension' keeps the length mode's tension {sigma} ({b.Tension}, "
             f"{panel.tension.text()!r}, {b.Status})")
     G.screenshot("gui_blend_tension_kept.png")
@@ -615,7 +617,7 @@ def tension_mode_and_g2_reach(doc, sk, right, left):
     G.wait()
     import re
     found = re.search("the solver reached battens of tension up to ([0-9.e-]+) 1/mm", b.Status)
-    G.check(b.Status.startswith("error: no G2 blend at tension 0.003 1/mm") and found,
+    G.check(b.Status.startswith("error: no G2 blend at tension 0.0030 1/mm") and found,
             f"G2 beyond its reach: the largest tension found said ({b.Status})")
     Gui.SendMsgToActiveView("ViewTop")
     G.screenshot("gui_blend_g2_reach.png")
@@ -661,7 +663,7 @@ def bound_length_toggled(doc, sk, right, left):
             f"bound Length, ends no free batten joins: by the bound length ({b.Mode}, "
             f"{b.Length}, {b.ExpressionEngine}, {b.Status})")
     G.check(panel.warning[0].isVisible() and "No free batten" in said and "LenSheet.len" in said
-            and "160 mm" in said, f"bound Length: the panel says why by length ({said})")
+            and "160.00 mm" in said, f"bound Length: the panel says why by length ({said})")
     Gui.SendMsgToActiveView("ViewTop")
     G.screenshot("gui_blend_bound_length_toggled.png")
     panel.accept()

@@ -84,7 +84,7 @@ def typing_pace():
     line = G.error_line(panel)
     said = G.report_text()[r0:].strip()
     G.screenshot("gui_typing_error_line.png")
-    G.check(b.Status.startswith("error") and "15 mm" in line and not said,
+    G.check(b.Status.startswith("error") and "15.00 mm" in line and not said,
             f"F6: a typed length that cannot be solved: on the panel's error line ({line!r}) "
             f"only, not in the report view ({said!r})")
     r1 = len(G.report_text())
@@ -92,7 +92,7 @@ def typing_pace():
     G.wait()                             # the report view takes it from an event
     said = G.report_text()[r1:].strip()
     G.check(not accepted and T.CURRENT and T.CURRENT[0] is panel and said.count("\n") == 0
-            and "Elastica ElasticaBlend: length 15 mm" in said and "Recompute failed" not in said,
+            and "Elastica ElasticaBlend: length 15.00 mm" in said and "Recompute failed" not in said,
             f"F6: OK on it says it once in the report view ({said!r}); the panel stays open")
     panel.reject()
     G.pump()

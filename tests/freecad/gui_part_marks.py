@@ -62,7 +62,7 @@ def expression_mark(doc):
     editor.findChild(QtGui.QPushButton, "okBtn").click()
     G.wait()
     G.check(dict(sp.ExpressionEngine).get("Tension") == "Sheet.sigma * 3"
-            and abs(sp.Tension - 0.003) < 1e-15 and box.text() == "0.003 1/mm\u00b2"
+            and abs(sp.Tension - 0.003) < 1e-15 and box.text() == "0.0030 1/mm\u00b2"
             and box.isReadOnly() and "Sheet.sigma * 3" in box.toolTip()
             and len(box.lineEdit().actions()) == 1,
             f"its OK binds the new expression, the box shows it ({box.text()!r}, "

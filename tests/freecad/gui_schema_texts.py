@@ -5,7 +5,7 @@ run_all):
   unit, as every other text: under any schema they were bare numbers ('chord 3.94, a loop
   1.3 wide' beside boxes in inches);
 - the Fit panel's result line gives the B-spline's deviation in plain decimals, as its
-  Tolerance box ('0.0000394 in'): it said 'B-spline within 2.27e-05 in';
+  Tolerance box ('0.000039 in'): it said 'B-spline within 2.27e-05 in';
 - a measured length at rounding noise (below FreeCAD's Confusion, 1e-7 mm) as FreeCAD
   writes it, 0: the fit of points on an elastica said 'rms 1.2e-11 mm, max 2.24e-11 mm',
   the elliptic blend of points in line 'B-spline within 7.11e-15 mm';
@@ -51,7 +51,7 @@ def ellblend_loop_in_the_schema(doc):
 def fit_result_in_plain_decimals(doc):
     """The sample S curve's 40 points fitted under Imperial decimal: the result line's
     lengths (rms 0.0000442 in: below 1e-4 in, where '%.3g' turns to an exponent) in plain
-    decimals, as the Tolerance box beside them ('0.0000394 in')."""
+    decimals, as the Tolerance box beside them ('0.000039 in')."""
     with G.user_schema(3):
         sk = S.points_sketch(doc, S.keyline_xy(40)[0], "Keyline")
         panel = G.open_panel(doc, "Elastica_Fit", [(sk, "")], "Fit elastica")
@@ -62,7 +62,7 @@ def fit_result_in_plain_decimals(doc):
         G.check(not panel.obj.Status.startswith("error") and len(lengths) >= 3
                 and not any("e" in x for x in lengths)
                 and 0 < min(float(x) for x in lengths) < 1e-4
-                and panel.tol.text() == "0.0000394 in",
+                and panel.tol.text() == "0.000039 in",
                 f"the Fit result line in plain decimals: {said!r}, "
                 f"Tolerance {panel.tol.text()!r}")
         panel.reject()
@@ -72,7 +72,7 @@ def fit_result_in_plain_decimals(doc):
 def rounding_noise_as_zero(doc):
     """The sample elastica's 40 points fitted by the smooth model (rms about 1e-11 mm) and
     the elliptic blend through four points in line (its B-spline within about 1e-14 mm):
-    the result lines say 0 in the unit FreeCAD writes 0 in ('rms 0 mm, max 0 mm', '0 in'
+    the result lines say 0 in the unit FreeCAD writes 0 in ('rms 0.00 mm, max 0.00 mm', '0.00 in'
     under Imperial decimal), a figure above the noise as before; the properties keep
     the figures."""
     sk = S.points_sketch(doc, S.keyline_xy(40)[0], "OnTheCurve")
@@ -84,12 +84,12 @@ def rounding_noise_as_zero(doc):
     G.screenshot("gui_fit_rounding_noise.png")
     within = re.search(r"B-spline within ([0-9.]+) nm ", said)     # above the noise: as before
     G.check(f.Model == "smooth" and f.Rms < 1e-7 and f.MaxError < 1e-7
-            and "rms 0 mm, max 0 mm<br>" in said and within and float(within.group(1)) > 100,
-            f"a fit at rounding noise: 'rms 0 mm, max 0 mm' (Rms {f.Rms!r}): {said!r}")
+            and "rms 0.00 mm, max 0.00 mm<br>" in said and within and float(within.group(1)) > 100,
+            f"a fit at rounding noise: 'rms 0.00 mm, max 0.00 mm' (Rms {f.Rms!r}): {said!r}")
     with G.user_schema(3):
         panel.refresh()
         said = panel.result.text()
-        G.check("rms 0 in, max 0 in<br>" in said, f"and under Imperial decimal: {said!r}")
+        G.check("rms 0.00 in, max 0.00 in<br>" in said, f"and under Imperial decimal: {said!r}")
     panel.reject()
     G.pump()
     line = S.points_sketch(doc, [(0.0, 0.0), (10.0, 0.0), (20.0, 0.0), (30.0, 0.0)], "InLine")
@@ -99,8 +99,8 @@ def rounding_noise_as_zero(doc):
     said = panel.result.text()
     G.screenshot("gui_ellblend_rounding_noise.png")
     G.check(e.Status == "ok" and e.BSplineDeviation < 1e-7
-            and said.startswith("B-spline within 0 mm of the curve (tolerance 1 \u00b5m)"),
-            f"an elliptic blend at rounding noise: within 0 mm ({e.BSplineDeviation!r}): "
+            and said.startswith("B-spline within 0.00 mm of the curve (tolerance 1.00 \u00b5m)"),
+            f"an elliptic blend at rounding noise: within 0.00 mm ({e.BSplineDeviation!r}): "
             f"{said!r}")
     panel.reject()
     G.pump()

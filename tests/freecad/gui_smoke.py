@@ -30,7 +30,8 @@ the panel closed); gui_panel_lifecycle.py's gui_close_with_panel.png,
 gui_delete_during_panel.png and gui_keep_needs_copy.png; gui_blend_panel.py's
 gui_blend_picked_tops.png, gui_blend_ends_by_length.png, gui_blend_bound.png,
 gui_blend_imperial.png and the others its docstring names; gui_schema_texts.py's
-gui_ellblend_loop_imperial.png, gui_fit_result_imperial.png; gui_fc_behaviour.py's, which
+gui_ellblend_loop_imperial.png, gui_fit_result_imperial.png; gui_decimals.py's
+gui_decimals_2.png, gui_decimals_6.png, gui_decimals_property_view.png; gui_fc_behaviour.py's, which
 its docstring names; gui_typed_units.py's gui_typed_wrong_unit.png; gui_typed_expressions.py's
 gui_typed_equals_editor.png, gui_typed_bound.png and gui_typed_division_by_zero.png;
 gui_reopen_old.py's gui_reopen_old.png; gui_recording.py's gui_recorded_blend.png. The outcome goes
@@ -564,6 +565,10 @@ def run():
     # texts in the unit schema: the elliptic blend's loop sizes
     import gui_schema_texts
     gui_schema_texts.run_all(sys.modules[__name__])
+
+    # the panels' numbers at FreeCAD's Decimals preference (2 and 6), the property view's
+    import gui_decimals
+    gui_decimals.run_all(sys.modules[__name__])
 
     # typing, wrong selections, the Model box, a sketch double-clicked: as FreeCAD's own
     import gui_fc_behaviour

@@ -154,7 +154,7 @@ def blend_panel(doc, S):
             and not nb.Status.startswith("error") and panel.list.count() >= 1,
             f"blend without a free batten: by length {nb.Length}, {panel.list.count()} solutions "
             f"({nb.Status})")
-    G.check(panel.warning[0].isVisible() and "No free batten" in said and "112 mm" in said,
+    G.check(panel.warning[0].isVisible() and "No free batten" in said and "112.00 mm" in said,
             f"blend without a free batten: the panel says why it is by length ({said})")
     G.screenshot("gui_blend_no_free_batten.png")
     panel.reject()

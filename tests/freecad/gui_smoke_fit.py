@@ -10,6 +10,8 @@ import math
 import FreeCAD as App
 import FreeCADGui as Gui
 
+from freecad.elastica import units as U
+
 G = None            # the gui_smoke module (check, wait, screenshot, ...)
 
 
@@ -159,7 +161,7 @@ def fit_panel_ends(doc, f, lines, k0):
             f"fit: start tangent from a picked edge, end pinned ({f.Status})")
     # the line is 0.1 rad off the exact data's start: the warning line says what it costs
     # (the free rms in the unit FreeCAD's Standard schema picks for it: µm below 0.1 mm)
-    free = f"{f.FreeRms:.3g} mm" if f.FreeRms >= 0.1 else f"{f.FreeRms * 1e3:.3g} µm"
+    free = U.length_text(f.FreeRms)
     G.check(f.Warnings and panel.warning[0].isVisible() and "Start tangent" in
             panel.warning[1].text() and free in panel.warning[1].text() and
             f.Rms > 2 * f.FreeRms and not [w for w in f.Warnings if "outliers?" in w] and
@@ -201,7 +203,7 @@ def fit_panel_ends(doc, f, lines, k0):
             (start - arc_end).Length < 1e-9 and "error" not in f.Status,
             f"fit: G2 to the picked arc: starts at its end, curvature {kappa:.6g}/mm, the arc's "
             f"{k0:.6g}/mm ({f.Status})")
-    G.check(abs(panel.start_curvature[1].value() - k0) < 1e-9 and f"end \u03ba {k0:.4g}" in
+    G.check(abs(panel.start_curvature[1].value() - k0) < 1e-9 and f"end \u03ba {U.number_text(k0)}" in
             panel.result.text(), "fit: the G2 join's curvature in its (disabled) field and the "
             f"result ({panel.start_curvature[1].text()})")
     box = App.BoundBox(lines.Shape.Edges[1].BoundBox)          # the arc and the join
@@ -264,7 +266,7 @@ def fit_panel_sparse(doc, S):
     G.wait()
     text = panel.warning[1].text()
     G.check(f.Model == "discrete" and panel.warning[0].isVisible() and "7 points" in text and
-            "Smooth elastica" in text and f"{f.Rms:.3g} mm" in text,
+            "Smooth elastica" in text and U.length_text(f.Rms) in text,
             f"fit of 7 points, discrete: the warning line names the smooth model ({text})")
     view = Gui.ActiveDocument.ActiveView
     view.setCameraOrientation(f.Plane.Rotation)

@@ -68,7 +68,7 @@ def spline_panel(doc, S):
     panel.mode.setCurrentIndex(0)
     G.wait()
     # the 140 mm batten is pushed together (tension < 0): tension mode cannot keep it, said
-    G.check(s.Mode == "tension" and s.Status.startswith("ok; the spline shown by length (140 mm) "
+    G.check(s.Mode == "tension" and s.Status.startswith("ok; the spline shown by length (140.00 mm) "
                                                         "was pushed together")
             and panel.tension.minimum() == 0.0, f"spline: back to tension mode ({s.Status})")
     # a G2 start to the line: pick the edge, then the condition

@@ -164,7 +164,7 @@ def equals_opens_the_editor(doc, fit):
     editor.findChild(QtGui.QPushButton, "okBtn").click()
     G.wait()
     G.check(dict(fit.ExpressionEngine).get("ResampleStep") == "Sheet.step"
-            and fit.ResampleStep.Value == 8.0 and box.text() == "8 mm" and box.isReadOnly()
+            and fit.ResampleStep.Value == 8.0 and box.text() == "8.00 mm" and box.isReadOnly()
             and len(box.lineEdit().actions()) == 1 and "Sheet.step" in box.toolTip()
             and G.error_line(panel) == "",
             f"F2: its OK binds ResampleStep to Sheet.step: the box read-only, marked, showing "
@@ -193,7 +193,7 @@ def equals_opens_the_editor(doc, fit):
     editor.findChild(QtGui.QPushButton, "okBtn").click()
     G.wait()
     G.check(dict(fit.ExpressionEngine).get("ResampleStep").replace(" ", "") == "Sheet.step+2mm"
-            and fit.ResampleStep.Value == 10.0 and box.text() == "10 mm",
+            and fit.ResampleStep.Value == 10.0 and box.text() == "10.00 mm",
             f"F2: ... and its OK binds the new expression ({box.text()!r}, "
             f"{dict(fit.ExpressionEngine)})")
     panel.reject()

@@ -11,6 +11,7 @@ from freecad.elastica import commands as C
 from freecad.elastica import blend as Bl
 from freecad.elastica import comb as Co
 from freecad.elastica import geometry as G
+from freecad.elastica import units as U
 
 
 def _edge(obj, name):
@@ -223,7 +224,7 @@ class BlendTest(S.DocTest):
         b.Length = 20.0
         self.doc.recompute()
         self.assertTrue(b.Status.startswith("error"))
-        self.assertIn("any length above 47.1699 mm", b.Status)
+        self.assertIn("any length above 47.17 mm", b.Status)
         self.assertEqual(b.Length, 20.0)                       # as typed
         self.assertEqual((list(b.Lengths), list(b.Descriptions)), ([], []))
         self.assertAlmostEqual(b.Shape.Length, good, delta=1e-9)  # the last good curve kept
@@ -406,7 +407,7 @@ class BlendTest(S.DocTest):
         self.assertGreaterEqual(len(f.Lengths), 1)
         self.assertEqual(f.Loops[0], 0)
         self.assertAlmostEqual(f.Shape.Length, 112.0, delta=1e-3)
-        self.assertTrue(any("no free batten" in m and "112 mm" in m and "75 mm" in m
+        self.assertTrue(any("no free batten" in m and "112.00 mm" in m and "75.00 mm" in m
                             for m in C.MESSAGES), C.MESSAGES)
         # the recorded command makes the same feature (a macro replays it)
         g = Bl.make(self.doc, (sk, "Edge1"), (sk, "Edge2"), Mode="length", Length=112.0)
@@ -496,7 +497,7 @@ class BlendTest(S.DocTest):
         b.Tension = 1e5 / gap ** 2 * 1.01
         self.doc.recompute()
         self.assertTrue(b.Status.startswith("error"), b.Status)
-        self.assertIn(f"too high for ends {gap:.6g} mm apart", b.Status)
+        self.assertIn(f"too high for ends {U.number_text(gap)} mm apart", b.Status)
         self.assertIn(f"at most {1e5 / gap ** 2:.4g}/mm^2", b.Status)
         b.Tension = 1e5 / gap ** 2 * 0.99            # within: solved
         self.doc.recompute()
@@ -621,24 +622,24 @@ class BlendG2Test(S.DocTest):
         b = Bl.make(self.doc, (sk, "Edge1"), (sk, "Edge2"), Continuity="G2", Mode="length")
         self.doc.recompute()
         mm_status = b.Status
-        self.assertIn(" mm, tension 0 1/mm\u00b2", mm_status)
+        self.assertIn(" mm, tension 0.00 1/mm\u00b2", mm_status)
         schema = App.Units.getSchema()
         try:
             App.Units.setSchema(3)                 # Imperial decimal (in/lb)
             b.Length = 1.05 * b.BlendLength
             self.doc.recompute()
             L, sigma = b.BlendLength, b.BlendTension
-            self.assertIn(f"length {L / 25.4:.4g} in, tension {sigma * 25.4 ** 2:.3g} 1/in\u00b2",
-                          b.Status)
+            self.assertIn(f"length {U.number_text(L / 25.4)} in, tension "
+                          f"{U.number_text(sigma * 25.4 ** 2)} 1/in\u00b2", b.Status)
             self.assertNotIn("mm", b.Status)
-            self.assertTrue(all(f"{length / 25.4:.4g} in, " in text and "/in" in text
+            self.assertTrue(all(f"{U.number_text(length / 25.4)} in, " in text and "/in" in text
                                 and "mm" not in text
                                 for length, text in zip(b.Lengths, b.Descriptions)),
                             list(b.Descriptions))
             b.Length = 61.95
             self.doc.recompute()
             self.assertIn("error", b.Status)
-            self.assertIn(f"of length {61.95 / 25.4:.6g} in", b.Status)
+            self.assertIn(f"of length {U.number_text(61.95 / 25.4)} in", b.Status)
             self.assertNotIn("mm", b.Status)
         finally:
             App.Units.setSchema(schema)
@@ -674,7 +675,7 @@ class BlendG2Test(S.DocTest):
                 self.assertEqual(said(b, "Status"), mm_status)
             (b,) = S.reopened(self, "said.FCStd", b.Name)
             App.Units.setSchema(3)
-            self.assertIn(f"no G2 blend of length {61.95 / 25.4:.6g} in", said(b, "Status"))
+            self.assertIn(f"no G2 blend of length {U.number_text(61.95 / 25.4)} in", said(b, "Status"))
             self.assertNotIn("mm", said(b, "Status"))
         finally:
             App.Units.setSchema(schema)
@@ -752,7 +753,7 @@ class BlendG2Test(S.DocTest):
         b.Edge2 = (sk, ["Edge2"])           # the arc it followed is deleted: relinked
         self.doc.recompute()
         self.assertTrue(b.Status.startswith("error"), b.Status)
-        self.assertIn("no G2 blend at tension 0 1/mm", b.Status)
+        self.assertIn("no G2 blend at tension 0.00 1/mm", b.Status)
         self.assertIn("or G1", b.Status)
         self.assertNotIn("(best result", b.Status)      # not the library's inner words
         self.assertAlmostEqual(b.Shape.Length, good, delta=1e-12)
@@ -768,7 +769,7 @@ class BlendG2Test(S.DocTest):
         sk = two_arcs_sketch(self.doc, 30.0, 40.0)
         b = Bl.make(self.doc, (sk, "Edge1"), (sk, "Edge2"), Continuity="G2", Tension=1.0)
         self.doc.recompute()
-        self.assertTrue(b.Status.startswith("error: no G2 blend at tension 1 1/mm"), b.Status)
+        self.assertTrue(b.Status.startswith("error: no G2 blend at tension 1.00 1/mm"), b.Status)
         self.assertIn("did not converge", b.Status)
         self.assertNotIn("(best result", b.Status)
         found = re.search("with G2 ends the solver reached battens of tension up to ([0-9.e-]+) "
@@ -798,7 +799,7 @@ class BlendG2Test(S.DocTest):
         self.check_g2(b, sk)
         b.Tension = 0.003
         self.doc.recompute()
-        self.assertTrue(b.Status.startswith("error: no G2 blend at tension 0.003 1/mm"), b.Status)
+        self.assertTrue(b.Status.startswith("error: no G2 blend at tension 0.0030 1/mm"), b.Status)
         found = re.search("with G2 ends the solver reached battens of tension up to ([0-9.e-]+) "
                           "1/mm", b.Status)
         self.assertIsNotNone(found, b.Status)

@@ -55,8 +55,8 @@ class BlendG2StartTest(S.DocTest):
         self.assertAlmostEqual(b.BlendLength, 115.0, delta=1e-6)
         self.assertGreater(b.BlendTension, 0.0)
         self.assertIn("2 inflections", b.Status)
-        self.assertIn("no G2 blend of the command's length 69.1 mm was found: G2 solved for "
-                      "115 mm, the fairest length a G2 blend was found at", say(self.panel.note))
+        self.assertIn("no G2 blend of the command's length 69.10 mm was found: G2 solved for "
+                      "115.00 mm, the fairest length a G2 blend was found at", say(self.panel.note))
         # G2: the edges' curvatures at its ends (0 on the line, 1/25 on the arc)
         e = b.Shape.Edges[0]
         ks = sorted(abs(e.curvatureAt(u)) for u in (e.FirstParameter, e.LastParameter))
@@ -75,7 +75,7 @@ class BlendG2StartTest(S.DocTest):
         self.panel.auto = None          # the panel's number box: typed over
         self.set("Continuity", "G2")
         self.assertEqual((b.Mode, float(b.Length)), ("length", 70.0))
-        self.assertIn("error: no G2 blend of length 70 mm", b.Status)
+        self.assertIn("error: no G2 blend of length 70.00 mm", b.Status)
 
     def test_g1_after_another_edit_drops_the_g2_note(self):
         """It was: G2 started at 115 mm, another edit (the tolerance: G1 no longer returns to
@@ -100,7 +100,7 @@ class BlendG2StartTest(S.DocTest):
         p.obj, p.doc, p.picked = b, self.doc, None
         p.refresh = p.refit = p.show_mode = p.hold = lambda: None
         p._note, p._note_for = P.saved_note(b), P.note_values(b)
-        self.assertIn("G2 solved for 115 mm", say(p.note))
+        self.assertIn("G2 solved for 115.00 mm", say(p.note))
         self.set("Continuity", "G1")
         self.assertEqual((b.Continuity, float(b.Length)), ("G1", 115.0))
         self.assertEqual(p.note, "")

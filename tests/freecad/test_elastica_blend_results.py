@@ -67,11 +67,11 @@ class BlendResultsTest(S.DocTest):
             self.assertEqual(Bl.descriptions(b), list(b.Descriptions))
             seen.append(b.Descriptions[1])
         self.assertEqual(seen, [
-            "2: 448.7 mm, energy 0.174/mm, 0 inflections, 0 loops, turns 346\u00b0 clockwise, "
-            "max curvature 0.0176/mm",
-            "2: 454.3 mm, energy 0.177/mm, 0 inflections, 1 loop, turns 354\u00b0 "
-            "counter-clockwise, max curvature 0.0171/mm"])
+            "2: 448.74 mm, energy 0.17/mm, 0 inflections, 0 loops, turns 345.96\u00b0 "
+            "clockwise, max curvature 0.018/mm",
+            "2: 454.27 mm, energy 0.18/mm, 0 inflections, 1 loop, turns 354.04\u00b0 "
+            "counter-clockwise, max curvature 0.017/mm"])
         # a file saved before Turns (none until its first recompute): the texts without it
         b.Turns = []
-        self.assertEqual(Bl.descriptions(b)[1], "2: 454.3 mm, energy 0.177/mm, 0 inflections, "
-                         "1 loop, max curvature 0.0171/mm")
+        self.assertEqual(Bl.descriptions(b)[1], "2: 454.27 mm, energy 0.18/mm, 0 inflections, "
+                         "1 loop, max curvature 0.017/mm")

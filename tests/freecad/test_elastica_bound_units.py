@@ -111,7 +111,7 @@ class BoundUnitsTest(unittest.TestCase):
         g.setExpression("ResampleStep", "Params.B1")
         self.doc.recompute()
         self.assertEqual(g.Status, "error: ResampleStep is bound to Params.B1 = "
-                         "3 s: a resample step is in a "
+                         "3.00 s: a resample step is in a "
                          "unit of length (e.g. '=12 cm') or a plain number (mm)")
 
 

@@ -16,6 +16,7 @@ from freecad.elastica import blend as Bl
 from freecad.elastica import commands as C
 from freecad.elastica import fit as Fi
 from freecad.elastica import spline as Sp
+from freecad.elastica import units as U
 
 V = App.Vector
 
@@ -78,7 +79,7 @@ class ClosedJoinTest(S.DocTest):
             now = s.Shape.Length
             self.assertGreater(abs(now - seam), 1.0)
             self.assertIn("joined to it at its seam by an earlier version", s.Status)
-            self.assertIn(f"(length {seam:.6g} -> {now:.6g} mm)", s.Status)
+            self.assertIn(f"(length {U.number_text(seam)} -> {U.number_text(now)} mm)", s.Status)
             from freecad.elastica.proxy import said   # a panel opened under Imperial decimal
             schema = App.Units.getSchema()
             try:
@@ -88,8 +89,10 @@ class ClosedJoinTest(S.DocTest):
                 marked = said(s, "Status")      # there and this text its other lengths
             finally:
                 App.Units.setSchema(schema)
-            self.assertIn(f"(length {seam / 25.4:.6g} -> {now / 25.4:.6g} in)", inches)   # exact
-            self.assertIn(f'(length {seam / 25.4:.6g} -> {now / 25.4:.6g} ")', marked)
+            self.assertIn(f"(length {U.number_text(seam / 25.4)} -> {U.number_text(now / 25.4)} in)",
+                          inches)
+            self.assertIn(f'(length {U.number_text(seam / 25.4)} -> {U.number_text(now / 25.4)} ")',
+                          marked)
             self.assertEqual(len([m for m in printed if "earlier version" in m]), 1, printed)
             s.touch()                   # the same input: its outcome stands, said once
             self.doc.recompute()
@@ -108,7 +111,7 @@ class ClosedJoinTest(S.DocTest):
         s = Sp.make(self.doc, [(pts, [])], StartCondition="tangent", StartEdge=(self.sk, "Edge1"))
         self.doc.recompute()
         self.assertEqual(len(s.Warnings), 1, s.Warnings)
-        self.assertIn("the start edge (closed) is 3 mm from the first point", s.Warnings[0])
+        self.assertIn("the start edge (closed) is 3.00 mm from the first point", s.Warnings[0])
         c = s.Shape.Edges[0].Curve   # the circle's tangent at its top: along the x axis
         x = S.SKETCH_PLACEMENT.Rotation.multVec(V(1, 0, 0))
         self.assertLess(1 - abs(App.Vector(c.tangent(c.FirstParameter)[0]).normalize().dot(x)),

@@ -17,6 +17,7 @@ from elastica_samples import el, travel_ends
 from freecad.elastica import commands as C
 from freecad.elastica import comb as Co
 from freecad.elastica import fit as Fi
+from freecad.elastica import units as U
 from freecad.elastica import fit_core as Fc
 from freecad.elastica import geometry as G
 from freecad.elastica import links as L
@@ -312,7 +313,8 @@ class FitResultTest(S.DocTest):
                 self.assertEqual(len(said), 1, (model, list(f.Warnings)))
                 self.assertIn("2 of 40 points lie", said[0])
                 top = S.SKETCH_PLACEMENT.multVec(App.Vector(*glitched[25], 0))
-                self.assertIn(f"the farthest at ({top.x:.4g}, {top.y:.4g}, {top.z:.4g})", said[0])
+                self.assertIn(f"the farthest at ({U.number_text(top.x)}, {U.number_text(top.y)}, "
+                              f"{U.number_text(top.z)})", said[0])
                 # under Imperial decimal (a panel opened after the change: proxy.said) the
                 # figures and the place in inches (the place stayed in mm)
                 from freecad.elastica.proxy import said as said_now
@@ -322,7 +324,7 @@ class FitResultTest(S.DocTest):
                     inch = [w for w in said_now(f, "Warnings") if "outliers?" in w][0]
                 finally:
                     App.Units.setSchema(schema)
-                place = ", ".join(f"{v / 25.4:.4g}" for v in (top.x, top.y))   # exact, in inches
+                place = ", ".join(U.number_text(v / 25.4) for v in (top.x, top.y))   # exact, in inches
                 self.assertIn(f"the farthest at ({place}, ", inch)
                 self.assertNotIn("mm", inch)
 
@@ -341,7 +343,8 @@ class FitResultTest(S.DocTest):
         pts = swinging_sketch()
         held = np.insert(pts, 17, 0.5 * (pts[16] + pts[17]), axis=0)
         ends = [S.SKETCH_PLACEMENT.multVec(App.Vector(*pts[i], 0)) for i in (16, 17)]
-        places = [f"({v.x:.4g} mm, {v.y:.4g} mm, {v.z:.4g} mm)" for v in ends]
+        places = [f"({U.number_text(v.x)} mm, {U.number_text(v.y)} mm, {U.number_text(v.z)} mm)"
+                  for v in ends]
         for name, xy, swings, models in (("Swings", pts, True, ("smooth",)),
                                          ("Held", held, False, ("smooth", "discrete"))):
             for model in models:
@@ -442,7 +445,7 @@ class FitResultTest(S.DocTest):
         f = Fi.make(self.doc, [(self.sk, [])], Model="smooth")
         self.doc.recompute()
         good = f.Shape.copy()
-        for prop, value, words in (("Tolerance", 1e-300, "1e-300"), ("Tolerance", math.nan, "nan"),
+        for prop, value, words in (("Tolerance", 1e-300, "1.0e-300"), ("Tolerance", math.nan, "nan"),
                                    ("Degree", 0, "Degree = 0"), ("Degree", 30, "Degree = 30"),
                                    ("ResampleStep", -1.0, "-1"),
                                    ("SamplesPerEdge", 0, "SamplesPerEdge = 0")):
@@ -779,8 +782,8 @@ class FitConstraintTest(S.DocTest):
         self.assertEqual(len(far.Warnings), 1, list(far.Warnings))
         w = far.Warnings[0]
         self.assertIn("Start curvature", w)
-        self.assertIn(f"{far.FreeRms:.3g} mm", w)
-        self.assertIn(f"{far.Rms:.3g} mm", w)
+        self.assertIn(f"{U.number_text(far.FreeRms)} mm", w)
+        self.assertIn(f"{U.number_text(far.Rms)} mm", w)
         # freed again: the warning goes
         far.UseStartCurvature = False
         self.doc.recompute()
@@ -934,7 +937,7 @@ class FitConstraintTest(S.DocTest):
                       EndTangent=(self.lines, ["Edge2"])),
                  "use Elastic spline (G2 to edge at both ends)"),
                 (dict(StartContinuity="G1", StartTangent=(lifted, ["Edge1"])),
-                 "the start edge's end lies 2 mm off the fit plane, more than the Tolerance")):
+                 "the start edge's end lies 2.00 mm off the fit plane, more than the Tolerance")):
             f = Fi.make(self.doc, [(self.sk, [])], **dict(dict(Model="smooth"), **props))
             self.doc.recompute()
             self.assertTrue(f.Status.startswith("error") and said in f.Status, (props, f.Status))
@@ -1358,8 +1361,8 @@ class FitSparseTest(S.DocTest):
         self.assertEqual(len(d.Warnings), 1, list(d.Warnings))
         w = d.Warnings[0]
         # each length in the unit FreeCAD's Standard schema picks for it: below 0.1 mm, µm
-        smooth = f"{s.Rms:.3g} mm" if s.Rms >= 0.1 else f"{s.Rms * 1e3:.3g} µm"
-        for part in ("7 points", "6 segments", f"{d.Rms:.3g} mm", smooth, "Smooth elastica"):
+        smooth = U.length_text(s.Rms)
+        for part in ("7 points", "6 segments", U.length_text(d.Rms), smooth, "Smooth elastica"):
             self.assertIn(part, w)
         dense = self._fit(S.points_sketch(self.doc, S.keyline_xy(40)[0], "Dense"), "discrete")
         self.assertEqual(list(dense.Warnings), [])
@@ -1443,15 +1446,15 @@ class FitBadInputTest(S.DocTest):
     def test_resample_step_longer_than_the_points_reach(self):
         xy, _ = S.keyline_xy(20)
         msg = self._rejected([(S.points_sketch(self.doc, xy), [])], ResampleStep=5000.0)
-        self.assertIn("Resample = 5000 mm is longer than the points reach", msg)
+        self.assertIn("Resample = 5000.00 mm is longer than the points reach", msg)
         reach = max(math.hypot(*(p - xy[0])) for p in xy)          # the S starts at smaller x
         self.assertLess(xy[0][0], xy[-1][0])
-        self.assertIn(f"all within {reach:.4g} mm", msg)
+        self.assertIn(f"all within {U.number_text(reach)} mm", msg)
         self.assertIn("0 fits the points as they are", msg)
         # a keyline split at its inflection: the same words (the polygon starts from either end)
         msg = self._rejected([(S.points_sketch(self.doc, xy), [])], ResampleStep=5000.0,
                              SplitAtInflection=True)
-        self.assertIn("Resample = 5000 mm is longer than the points reach", msg)
+        self.assertIn("Resample = 5000.00 mm is longer than the points reach", msg)
         self.assertNotIn("resample_equilateral", msg)
 
     def test_the_default_keyline_step_longer_than_the_points_reach(self):
@@ -1462,7 +1465,7 @@ class FitBadInputTest(S.DocTest):
         xy = [(50.0 * (i % 2), 0.01 * i + 0.1 * (i % 3)) for i in range(150)]
         wire = S.polyline_3d(self.doc, xy, placement=App.Placement(), name="ToAndFro")
         msg = self._rejected([(wire, [])], Model="discrete", SplitAtInflection=True)
-        self.assertIn("Resample = 0 takes the default step, 74.5 mm = 1/100 of the points' run", msg)
+        self.assertIn("Resample = 0 takes the default step, 74.50 mm = 1/100 of the points' run", msg)
         self.assertIn("longer than the points reach (all within 50.03 mm", msg)
         self.assertNotIn("resample_equilateral", msg)
 
@@ -1472,8 +1475,8 @@ class FitBadInputTest(S.DocTest):
         msg = self._rejected([(S.points_sketch(self.doc, xy), [])], ResampleStep=100.0)
         left = len(el.resampled_polygon(xy, 100.0))     # the fit's: ended at the last point
         self.assertLess(left, Fc.MIN_POINTS)
-        self.assertIn(f"Resample = 100 mm leaves {left} points; a fit needs {Fc.MIN_POINTS}", msg)
-        self.assertIn(f"need a step under {length / (Fc.MIN_POINTS - 1):.4g} mm", msg)
+        self.assertIn(f"Resample = 100.00 mm leaves {left} points; a fit needs {Fc.MIN_POINTS}", msg)
+        self.assertIn(f"need a step under {U.number_text(length / (Fc.MIN_POINTS - 1))} mm", msg)
 
     def test_resample_step_too_fine(self):
         xy, _ = S.keyline_xy(20)
@@ -1483,7 +1486,7 @@ class FitBadInputTest(S.DocTest):
         # 0.0003298 mm in the unit FreeCAD's Standard schema picks for it: nm
         self.assertLess(length / (most - 1), 1e-3)
         self.assertIn(f"more than {most - 1}: use a step of at least "
-                      f"{length / (most - 1) * 1e6:.4g} nm", msg)
+                      f"{U.number_text(length / (most - 1) * 1e6)} nm", msg)
         # the library's own limit: a step just above it is taken
         self.assertGreater(len(el.resample_equilateral(xy, 1.001 * length / (most - 1))), 0.99 * most)
 
@@ -1492,7 +1495,7 @@ class FitBadInputTest(S.DocTest):
         # start (2 vertices; then the last point, where the fit's polygon ends)
         xy = [(x, 0.0) for x in range(0, 101, 5)] + [(x, 0.5) for x in range(100, -1, -5)]
         msg = self._rejected([(S.polyline_3d(self.doc, xy), [])], ResampleStep=3.0)   # ordered
-        self.assertIn("Resample = 3 mm leaves 3 points", msg)
+        self.assertIn("Resample = 3.00 mm leaves 3 points", msg)
         self.assertIn("the polygon jumps where the points double back", msg)
 
     def test_a_whole_sketch_of_points_and_edges_fits_its_points(self):

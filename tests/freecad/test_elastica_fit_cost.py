@@ -12,6 +12,7 @@ import Part
 
 import elastica_samples as S
 from freecad.elastica.fit_core import fit_core
+from freecad.elastica import units as U
 from freecad.elastica.units import say
 
 
@@ -49,10 +50,10 @@ class FitCostTest(unittest.TestCase):
                 said = [w for w in warned if "the end conditions" in w]
                 self.assertEqual(said, [warned[0]])
                 # (resampled: the polygon's figures, both fits' to it)
-                rms = f"{r['rms']:.3g}" if not step else ""
+                rms = U.number_text(r["rms"]) if not step else ""
                 self.assertTrue(said[0].startswith(
                     "the end conditions (Start curvature) raise the rms from "
-                    f"{r['free_rms']:.3g} mm (free ends) to {rms}"), said[0])
+                    f"{U.number_text(r['free_rms'])} mm (free ends) to {rms}"), said[0])
                 self.assertTrue(said[0].endswith(" mm: check that they match the data"), said[0])
 
     def test_a_wrong_tangent_costly_near_its_end_only_is_warned_naming_it(self):

@@ -9,6 +9,7 @@ import FreeCAD as App
 import Part
 
 import elastica_samples as S
+from freecad.elastica import units as U
 from freecad.elastica import fit as Fi
 
 
@@ -154,7 +155,7 @@ class FitMeasureTest(S.DocTest):
         self.doc.recompute()
         warned = [w for w in f.Warnings if "resampled at" in w]
         self.assertEqual(len(warned), 1, list(f.Warnings))
-        self.assertIn(f"resampled at 20 mm lies {f.Rms:.3g} mm from them (rms), where their "
+        self.assertIn(f"resampled at 20.00 mm lies {U.number_text(f.Rms)} mm from them (rms), where their "
                       "own fit passes through them", warned[0])
         schema = App.Units.getSchema()
         try:
@@ -162,17 +163,17 @@ class FitMeasureTest(S.DocTest):
             shown = said(f, "Warnings")
             # the exact rms in inches (it said 0.0465 in: 1.18 mm, the mm text's, / 25.4)
             self.assertEqual(f"{f.Rms / 25.4:.3g}", "0.0464")
-            self.assertIn("resampled at 0.787 in lies 0.0464 in from them", shown[0])
+            self.assertIn("resampled at 0.79 in lies 0.046 in from them", shown[0])
             f.touch()
             self.doc.recompute()                   # what a recompute under Imperial writes
             self.assertEqual(list(f.Warnings), shown)
             self.assertFalse([w for w in f.Warnings if "mm" in w], list(f.Warnings))
             f.ResampleStep = 300.0                 # longer than the points reach
             self.doc.recompute()
-            self.assertTrue(f.Status.startswith("error: Resample = 11.8 in is"), f.Status)
+            self.assertTrue(f.Status.startswith("error: Resample = 11.81 in is"), f.Status)
             self.assertNotIn("mm", f.Status)
             App.Units.setSchema(0)
-            self.assertTrue(said(f, "Status").startswith("error: Resample = 300 mm is"),
+            self.assertTrue(said(f, "Status").startswith("error: Resample = 300.00 mm is"),
                             said(f, "Status"))
         finally:
             App.Units.setSchema(schema)
@@ -181,8 +182,8 @@ class FitMeasureTest(S.DocTest):
         """The Resample errors write their lengths by the exact value in the schema's unit
         (units.exact_mark), not their 4-digit mm text converted afterwards: points reaching
         31.355792 mm = 1.23448 in from their start, refused a 5000 mm step under Imperial
-        decimal, are 'all within 1.234 in' (the text '31.36 mm' converted said 1.235 in);
-        under Standard the text is as before."""
+        decimal, are 'all within 1.234 in' at 3 decimals (the text '31.36 mm' converted said
+        1.235 in); at FreeCAD's default 2 '1.23 in'; under Standard the text is as before."""
         reach = 1.23448 * 25.4
         xy = [(reach * i / 19, 2.0 * math.sin(math.pi * i / 19)) for i in range(20)]
         f = Fi.make(self.doc, [(S.points_sketch(self.doc, xy), [])], ResampleStep=5000.0)
@@ -190,13 +191,13 @@ class FitMeasureTest(S.DocTest):
         try:
             App.Units.setSchema(0)
             self.doc.recompute()
-            self.assertIn("error: Resample = 5000 mm is longer than the points reach (all "
+            self.assertIn("error: Resample = 5000.00 mm is longer than the points reach (all "
                           "within 31.36 mm of the end", f.Status)
             App.Units.setSchema(3)
             f.touch()
             self.doc.recompute()
-            self.assertIn("error: Resample = 196.9 in is longer than the points reach (all "
-                          "within 1.234 in of the end", f.Status)
+            self.assertIn("error: Resample = 196.85 in is longer than the points reach (all "
+                          "within 1.23 in of the end", f.Status)
             self.assertNotIn("mm", f.Status)
         finally:
             App.Units.setSchema(schema)

@@ -78,7 +78,7 @@ class G2ReachTest(S.DocTest):
         b = Bl.make(self.doc, (sk, "Edge1"), (sk, "Edge2"), Continuity="G2", Tension=0.003)
         self.doc.recompute()
         self.assertIn("Invalid", b.State, b.Status)
-        self.assertTrue(b.Status.startswith("error: no G2 blend at tension 0.003 1/mm"), b.Status)
+        self.assertTrue(b.Status.startswith("error: no G2 blend at tension 0.0030 1/mm"), b.Status)
         m = MET.search(b.Status)
         self.assertIsNotNone(m, b.Status)
         below, l_below, above, l_above = (float(m.group(i)) for i in (1, 3, 5, 7))
@@ -110,7 +110,7 @@ class G2ReachTest(S.DocTest):
         s = Sp.make(self.doc, [(pts, [])], StartCondition="G2", StartEdge=(sk, "Edge1"),
                     EndCondition="G2", EndEdge=(sk, "Edge2"), Tension=0.01)
         self.doc.recompute()
-        self.assertTrue(s.Status.startswith("error: no equilibrium found at Tension = 0.01 1/mm"),
+        self.assertTrue(s.Status.startswith("error: no equilibrium found at Tension = 0.010 1/mm"),
                         s.Status)
         m = MET.search(s.Status)
         self.assertIsNotNone(m, s.Status)
@@ -160,9 +160,9 @@ class G2ReachTest(S.DocTest):
                     Continuity="G2")
         self.doc.recompute()
         self.assertIn("Invalid", b.State, b.Status)
-        self.assertTrue(b.Status.startswith("error: no G2 blend of length 113 mm"), b.Status)
+        self.assertTrue(b.Status.startswith("error: no G2 blend of length 113.00 mm"), b.Status)
         found = re.search(r"G2 blends were found at the lengths ([0-9., mm]+) \(tried: 1.25 to "
-                          "10 \u00d7 the 75 mm between the ends\\): try one of those, or G1",
+                          "10 \u00d7 the 75.00 mm between the ends\\): try one of those, or G1",
                           b.Status)
         self.assertIsNotNone(found, b.Status)
         lengths = [float(t) for t in re.findall(r"([0-9.]+) mm", found.group(1))]

@@ -66,8 +66,8 @@ class SplineModeSwitchTest(S.DocTest):
         switch(T.SplinePanel, s, "tension")
         self.assertEqual(float(s.Tension), s.SplineTension)
         self.assertAlmostEqual(s.SplineLength, 272.104, delta=1e-6 * 272.104)
-        self.assertIn("the spline shown kept (272.104 mm), though another spline of this "
-                      "tension through the points is 225.578 mm long", s.Status)
+        self.assertIn("the spline shown kept (272.10 mm), though another spline of this "
+                      "tension through the points is 225.58 mm long", s.Status)
         new = s.Shape.Edges[0].Curve.getPoles()
         self.assertEqual(len(new), len(poles))
         self.assertLess(max((a - App.Vector(*b)).Length for a, b in zip(new, poles)), 1e-6)
@@ -100,9 +100,9 @@ class SplineModeSwitchTest(S.DocTest):
         said, _ = S.console_output(lambda: switch(T.SplinePanel, s, "tension"))
         self.assertEqual(float(s.Tension), 0.0)
         self.assertIn("was pushed together", s.Status)
-        self.assertIn(f"Elastica {s.Label}: the spline shown by length (230 mm) was pushed "
+        self.assertIn(f"Elastica {s.Label}: the spline shown by length (230.00 mm) was pushed "
                       "together", said)           # the report view
-        self.assertIn("tension mode cannot keep it and solved at Tension = 0 1/mm\u00b2 instead "
+        self.assertIn("tension mode cannot keep it and solved at Tension = 0.00 1/mm\u00b2 instead "
                       "(Solve for a length keeps it)", s.Status)
         self.assertAlmostEqual(s.SplineLength, 226.7535, delta=1e-3)
 
@@ -148,9 +148,9 @@ class SplineNotFoundAgainTest(S.DocTest):
         refuse_spline_solves(self, "initial")
         said, _ = S.console_output(lambda: switch(T.SplinePanel, s, "tension"))
         self.assertAlmostEqual(s.SplineLength, 225.578, delta=1e-3)
-        words = ("the spline shown (272.104 mm) was not found again at this tension (solved "
+        words = ("the spline shown (272.10 mm) was not found again at this tension (solved "
                  "from it), so another spline of this tension through the points is shown, "
-                 "225.578 mm long (Solve for a length keeps the one shown)")
+                 "225.58 mm long (Solve for a length keeps the one shown)")
         self.assertIn(words, s.Status)
         self.assertIn(words, said)
         # a tension typed next is a new problem: nothing said

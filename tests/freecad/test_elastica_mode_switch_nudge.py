@@ -36,7 +36,7 @@ class SplineKeptNudgeTest(S.DocTest):
         self.assertAlmostEqual(s.SplineTension, tension, delta=1e-12)
         self.assertAlmostEqual(s.SplineLength, 272.104, delta=0.05)
         self.assertIn("the spline kept at the switch of Solve for followed to the moved points "
-                      "(272.104 mm -> 272.", s.Status)
+                      "(272.10 mm -> 272.", s.Status)
         self.assertIn("another spline of this tension through them is 225.5", s.Status)
         self.assertTrue(s.KeptShown)
         # back where it was: the same curve as before the nudge
@@ -57,7 +57,7 @@ class SplineKeptNudgeTest(S.DocTest):
         refuse_spline_solves(self, "length")
         said, _ = S.console_output(lambda: nudge(sk, 5, 0.01))
         self.assertAlmostEqual(s.SplineLength, 225.58, delta=0.05)
-        words = "the spline kept at the switch of Solve for (272.104 mm) could not be followed"
+        words = "the spline kept at the switch of Solve for (272.10 mm) could not be followed"
         self.assertIn(words, s.Status)
         self.assertIn(words, said)
         self.assertFalse(s.KeptShown)
@@ -94,7 +94,7 @@ class SplineKeptNudgeTest(S.DocTest):
         self.assertFalse(s.Status.startswith("error"), s.Status)
         self.assertAlmostEqual(s.SplineLength, 272.104, delta=1e-6 * 272.104)
         self.assertTrue(s.KeptShown)
-        self.assertIn("the spline shown kept (272.104 mm)", s.Status)
+        self.assertIn("the spline shown kept (272.10 mm)", s.Status)
         # dragged away and to a point near where it was: followed from the curve on screen
         sk.movePoint(5, 1, sk.getPoint(4, 1))
         self.doc.recompute()
@@ -117,7 +117,7 @@ class SplineKeptNudgeTest(S.DocTest):
         refuse_spline_solves(self, "length")
         said, _ = S.console_output(lambda: nudge_to(sk, 5, where + App.Vector(0.01, 0, 0)))
         self.assertAlmostEqual(s.SplineLength, 225.58, delta=0.05)
-        words = "the spline kept at the switch of Solve for (272.104 mm) could not be followed"
+        words = "the spline kept at the switch of Solve for (272.10 mm) could not be followed"
         self.assertIn(words, s.Status)
         self.assertIn(words, said)
         self.assertFalse(s.KeptShown)

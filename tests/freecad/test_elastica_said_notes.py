@@ -23,7 +23,7 @@ class SaidNotesTest(S.DocTest):
                  [(0, 0), (100, 0), (105, 100), (110, 0), (200, 0)]]
         tension, note = Sp.starting_tension(spike)
         self.assertEqual(tension, 6.57e-4)   # the least that holds
-        self.assertIn("Tension = 0.000657 1/mm\u00b2 instead (100 / the 390.2 mm polygon",
+        self.assertIn("Tension = 0.000657 1/mm\u00b2 instead (100 / the 390.25 mm polygon",
                       say(note))
         App.Units.setSchema(3)
         # 6.57e-4 / mm^2 x 25.4^2 = 0.42387 / in^2; 390.25 mm = 15.36 in
@@ -38,10 +38,10 @@ class SaidNotesTest(S.DocTest):
         a, b = Bl.nearest_ends(e1, e2)
         length, note = Bs.free_or_length(e1, a, e2, b)
         self.assertEqual(length, 112.0)
-        self.assertIn("solved for a length instead, 112 mm (1.5 \u00d7 the 75 mm between",
+        self.assertIn("solved for a length instead, 112.00 mm (1.5 \u00d7 the 75.00 mm between",
                       say(note))
         App.Units.setSchema(3)
-        self.assertIn("instead, 4.40945 in (1.5 \u00d7 the 2.953 in between", say(note))
+        self.assertIn("instead, 4.41 in (1.5 \u00d7 the 2.95 in between", say(note))
 
     def test_elliptic_blend_loop_said_again(self):
         """A looping interpolation recomputed under Standard: its panel opened under
@@ -87,7 +87,7 @@ class SaidNotesTest(S.DocTest):
         b.Length = 250.0
         self.doc.recompute()
         self.doc.commitTransaction()
-        self.assertIn("length 9.843 in", b.Status)
+        self.assertIn("length 9.84 in", b.Status)
         return b, before
 
     def test_undo_says_the_state_undone_to_in_the_schema_of_now(self):
@@ -102,7 +102,7 @@ class SaidNotesTest(S.DocTest):
         self.assertEqual(b.Length.Value, 0.0)
         self.assertIn("length 49.86 mm", b.Status)         # as stored, under Standard
         self.assertEqual(said(b, "Status"), before)
-        self.assertIn("length 1.963 in", before)
+        self.assertIn("length 1.96 in", before)
         self.doc.redo()
         self.assertEqual(said(b, "Status"), edited)
         self.assertEqual(b.getEditorMode(SAID), ["Hidden"])
@@ -119,7 +119,7 @@ class SaidNotesTest(S.DocTest):
         b.removeProperty(SAID)
         (b,) = S.reopened(self, "before.FCStd", b.Name)
         App.Units.setSchema(3)
-        self.assertIn("length 1.963 in", said(b, "Status"))
+        self.assertIn("length 1.96 in", said(b, "Status"))
         self.assertEqual(list(json.loads(getattr(b, SAID))), ["Status"])
         self.assertFalse(b.Proxy._said)
 
@@ -136,7 +136,7 @@ class SaidNotesTest(S.DocTest):
         f = C.spline_sources([(sk, [])], open_panel=False)
         self.assertEqual(f.Tension, 6.57e-4)
         note = saved_note(f)
-        self.assertIn("Tension = 0.000657 1/mm\u00b2 instead (100 / the 390.2 mm polygon",
+        self.assertIn("Tension = 0.000657 1/mm\u00b2 instead (100 / the 390.25 mm polygon",
                       say(note))
         self.assertEqual(json.loads(getattr(f, NOTE))["values"],
                          {"Mode": "tension", "Tension": 6.57e-4})
@@ -149,9 +149,9 @@ class SaidNotesTest(S.DocTest):
     def test_comb_scale_in_the_schema(self):
         """The comb panel's 'scale ... mm\u00b2' line in the square of the schema's unit."""
         from freecad.elastica.units import area_text
-        self.assertEqual(area_text(645.16), "645.2 mm\u00b2")
+        self.assertEqual(area_text(645.16), "645.16 mm\u00b2")
         App.Units.setSchema(3)
-        self.assertEqual(area_text(645.16), "1 in\u00b2")
+        self.assertEqual(area_text(645.16), "1.00 in\u00b2")
 
 
 if __name__ == "__main__":

@@ -423,9 +423,9 @@ class SplineTest(S.DocTest):
         self.doc.recompute()
         s = self.spline(StartCondition="G2", StartEdge=(sk, "Edge1"))
         self.assertEqual(len(s.Warnings), 1, s.Warnings)
-        self.assertIn("2.2 mm from the first point", s.Warnings[0])
+        self.assertIn("2.20 mm from the first point", s.Warnings[0])
         self.assertIn("does not meet it", s.Warnings[0])
-        self.assertIn("warning: the start edge's end is 2.2 mm", s.Status)
+        self.assertIn("warning: the start edge's end is 2.20 mm", s.Status)
         line = sk.Shape.Edges[0]
         self.assertAlmostEqual(s.Shape.Edges[0].distToShape(line)[0], 2.2, delta=1e-9)
         # the panel's warning and status lines (proxy.said) in a schema changed since
@@ -434,7 +434,7 @@ class SplineTest(S.DocTest):
         schema = App.Units.getSchema()
         try:
             App.Units.setSchema(3)
-            inches = f"{2.2 / 25.4:.3g} in from the first point"
+            inches = "0.087 in from the first point"           # 0.0866 in: 2 digits at 2
             self.assertIn(inches, said(s, "Warnings")[0])
             self.assertIn(f"warning: the start edge's end is {inches}", said(s, "Status"))
             self.assertNotIn("mm", said(s, "Status"))
@@ -761,7 +761,7 @@ class SplineTest(S.DocTest):
         s.Length = 50.0
         self.doc.recompute()
         self.assertTrue(s.Status.startswith("error"))
-        self.assertIn("131.633 mm", s.Status)           # the polygon's length: the limit
+        self.assertIn("131.63 mm", s.Status)           # the polygon's length: the limit
         self.assertEqual(s.Length, 50.0)                 # as typed
         self.assertAlmostEqual(s.Shape.Length, good, delta=1e-12)
         s.Length = "0.15 m"                              # a length with its unit

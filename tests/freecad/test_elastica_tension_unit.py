@@ -39,7 +39,7 @@ class TensionUnitTest(unittest.TestCase):
             f.setExpression("Tension", "Sheet.A1")
             self.doc.recompute()
             self.assertIn("Invalid", f.State, f.Label)     # main: 5 1/mm^2, solved
-            self.assertEqual(f.Status, "error: Tension is bound to Sheet.A1 = 5 mm: a tension "
+            self.assertEqual(f.Status, "error: Tension is bound to Sheet.A1 = 5.00 mm: a tension "
                              "is in 1/length^2 (e.g. '=0.002 / mm^2') or a plain number "
                              "(1/mm^2)", f.Label)
 

@@ -30,13 +30,13 @@ class TensionWordsTest(S.DocTest):
         s = Sp.make(self.doc, [(sk, [])], Mode="tension")
         self.doc.recompute()
         said, status = self.refused(s, -0.5)
-        self.assertIn("Tension = -0.5 1/mm\u00b2 is not usable: it must be >= 0 1/mm\u00b2", said)
-        self.assertIn("Tension = -0.5 1/mm\u00b2 is not usable", status)
+        self.assertIn("Tension = -0.50 1/mm\u00b2 is not usable: it must be >= 0.00 1/mm\u00b2", said)
+        self.assertIn("Tension = -0.50 1/mm\u00b2 is not usable", status)
         self.assertNotIn("mm^2", said)
         App.Units.setSchema(IMPERIAL_DECIMAL)
         said, _ = self.refused(s, -0.25)
         self.assertIn(f"Tension = {-0.25 * 25.4 ** 2:.6g} 1/in\u00b2 is not usable: it must be "
-                      ">= 0 1/in\u00b2", said)
+                      ">= 0.00 1/in\u00b2", said)
 
     def test_a_g2_blend_pushed_by_tension(self):
         App.Units.setSchema(STANDARD)
@@ -44,5 +44,5 @@ class TensionWordsTest(S.DocTest):
         b = Bl.make(self.doc, (sk, "Edge1"), (sk, "Edge2"), Mode="tension", Continuity="G2")
         self.doc.recompute()
         said, status = self.refused(b, -0.001)
-        self.assertIn("Tension = -0.001 1/mm\u00b2: a G2 blend is solved for a tension >= 0", said)
+        self.assertIn("Tension = -0.0010 1/mm\u00b2: a G2 blend is solved for a tension >= 0", said)
         self.assertNotIn("mm^2", said)

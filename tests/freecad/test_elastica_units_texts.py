@@ -37,32 +37,33 @@ class UnitsTextsTest(unittest.TestCase):
         App.Units.setSchema(self.schema)
 
     def test_a_checked_length_is_rounded_once(self):
-        """Resampling step = -0.0012345678 mm under Imperial decimal: -0.000048605 in, its
-        value / 25.4 to 6 digits; on the old code '-4.86051e-05 in', the '-0.00123457 mm'
-        of '%g' divided again (a last digit off, and an exponent)."""
+        """Resampling step = -0.0012345678 mm under Imperial decimal: -0.000049 in, its
+        value / 25.4 to the Decimals preference (2: units.number_text's 2 significant digits
+        where FreeCAD writes '0.00 in'); on the old code '-4.86051e-05 in', the
+        '-0.00123457 mm' of '%g' divided again (a last digit off, and an exponent)."""
         App.Units.setSchema(IMPERIAL_DECIMAL)
         text = reported(check_number, "Resampling step", -0.0012345678, 0.0, None, "mm")
-        self.assertEqual(text, "Resampling step = -0.000048605 in is not usable: it must be "
-                               ">= 0 in", text)
+        self.assertEqual(text, "Resampling step = -0.000049 in is not usable: it must be "
+                               ">= 0.00 in", text)
         self.assertEqual(f"{-0.0012345678 / 25.4:.6g}", "-4.8605e-05")
         App.Units.setSchema(MKS)
         self.assertEqual(reported(check_number, "Length", -12345.6789, 0.0, None, "mm"),
-                         "Length = -12.3457 m is not usable: it must be >= 0 m")   # FreeCAD's 0 m
+                         "Length = -12.35 m is not usable: it must be >= 0.00 m")   # FreeCAD's
         App.Units.setSchema(STANDARD)          # as before
         self.assertEqual(reported(check_number, "Length", -2.5, 0.0, None, "mm"),
-                         "Length = -2.5 mm is not usable: it must be >= 0 mm")
+                         "Length = -2.50 mm is not usable: it must be >= 0.00 mm")
         self.assertEqual(reported(check_number, "Length", float("nan"), 0.0, None, "mm"),
-                         "Length = nan mm is not usable: it must be >= 0 mm")
+                         "Length = nan mm is not usable: it must be >= 0.00 mm")
         self.assertEqual(reported(check_number, "Tension", -1.0, 0.0, None, "1/mm^2"),
-                         "Tension = -1 1/mm\u00b2 is not usable: it must be >= 0 1/mm\u00b2")
+                         "Tension = -1.00 1/mm\u00b2 is not usable: it must be >= 0.00 1/mm\u00b2")
 
     def test_the_tolerance_check_says_its_bound_exactly(self):
         """check_tolerance's bound 1e-9 mm and a typed 1.2345678e-10 mm in the unit FreeCAD
         picks for each, from the exact values (old: '4.86051e-12 in', rounded twice)."""
         App.Units.setSchema(IMPERIAL_DECIMAL)
         text = reported(check_tolerance, 1.2345678e-10)
-        self.assertTrue(text.startswith(f"Tolerance = {1.2345678e-10 / 25.4:.6g} in is not "
-                                        f"usable: it must be >= {1e-9 / 25.4:.3g} in ("), text)
+        self.assertTrue(text.startswith("Tolerance = 4.9e-12 in is not usable: it must be >= "
+                                        "3.9e-11 in ("), text)     # below 1e-6: an exponent
 
     def test_rounding_to_digits_brackets_the_value(self):
         """floor_digits(x, d) <= x <= ceil_digits(x, d), each of at most d significant
@@ -95,21 +96,21 @@ class UnitsTextsTest(unittest.TestCase):
 
     def test_result_line_lengths_are_plain_decimals(self):
         """A result line's length (length_text: 'B-spline within ...') in the unit FreeCAD
-        picks for the value, in fixed notation as the boxes: 0.000577 mm is '0.0000227 in'
-        under Imperial decimal (was '2.27e-05 in') and '577 nm' under Standard;
-        1234 mm '1230 mm' (was '1.23e+03 mm'); below 1e-6 of the unit an exponent."""
+        picks for the value, in fixed notation as the boxes: 0.000577 mm is '0.000023 in'
+        under Imperial decimal (was '2.27e-05 in') and '577.00 nm' under Standard;
+        1234 mm '1234.00 mm' (was '1.23e+03 mm'); below 1e-6 of the unit an exponent."""
         App.Units.setSchema(IMPERIAL_DECIMAL)
-        self.assertEqual(U.length_text(0.000577), "0.0000227 in")
+        self.assertEqual(U.length_text(0.000577), "0.000023 in")
         self.assertEqual(U.length_text(151.0), "5.94 in")
-        self.assertEqual(U.say(U.exact_mark(0.0004)), "0.0000157 in")
-        self.assertEqual(U.say(U.length_mark(0.000577)), "0.0000227 in")
-        self.assertEqual(U.length_text(1e-5), f"{1e-5 / 25.4:.3g} in")      # 3.94e-07 in
+        self.assertEqual(U.say(U.exact_mark(0.0004)), "0.000016 in")
+        self.assertEqual(U.say(U.length_mark(0.000577)), "0.000023 in")
+        self.assertEqual(U.length_text(1e-5), "3.9e-07 in")
         App.Units.setSchema(STANDARD)
-        self.assertEqual(U.length_text(0.000577), "577 nm")
-        self.assertEqual(U.length_text(0.0227), "22.7 \u00b5m")
-        self.assertEqual(U.length_text(1234.0), "1230 mm")
-        self.assertEqual(U.length_text(1234.0, 4), "1234 mm")
-        self.assertEqual(U.length_text(151.0), "151 mm")                       # as before
+        self.assertEqual(U.length_text(0.000577), "577.00 nm")
+        self.assertEqual(U.length_text(0.0227), "22.70 \u00b5m")
+        self.assertEqual(U.length_text(1234.0), "1234.00 mm")
+        self.assertEqual(U.length_text(1234.0, 4), "1234.00 mm")        # (a mark's digits)
+        self.assertEqual(U.length_text(151.0), "151.00 mm")             # FreeCAD's UserString
         for schema in range(8):
             App.Units.setSchema(schema)
             for mm in (1e-4, 0.000577, 0.01, 0.5, 151.0, 1234.0, 9999.0, 2.5e6):
@@ -130,9 +131,9 @@ class MeasuredTextsTest(S.DocTest):
 
     def test_rounding_noise_is_written_as_freecad_writes_it(self):
         """Seven points on the sample elastica fitted by the discrete model: its warning in
-        the panel (proxy.said, figures) says the smooth model's curve lies '0 mm' from them,
-        as FreeCAD writes a length under its Confusion (1e-7 mm) at its precision ('0.00
-        mm'; '0 in' under Imperial decimal): it said 'lies 1.82e-11 mm'. The Warnings
+        the panel (proxy.said, figures) says the smooth model's curve lies '0.00 mm' from
+        them, as FreeCAD writes a length under its Confusion (1e-7 mm) at its precision
+        ('0.00 in' under Imperial decimal): it said 'lies 1.82e-11 mm'. The Warnings
         property (and the report view) keep the figure; a measured length from 1e-7 mm on
         is written as before, and an input (exact_mark: a tolerance of 1e-9 mm) as it is."""
         xy, _ = S.keyline_xy(7)
@@ -143,14 +144,14 @@ class MeasuredTextsTest(S.DocTest):
         self.assertEqual(len(kept), 1, list(f.Warnings))
         figure = re.search("the smooth model's curve lies (\\S+) mm from them", kept[0])
         self.assertTrue(figure and 0.0 < float(figure.group(1)) < 1e-7, kept[0])
-        for schema, zero in ((STANDARD, "0 mm"), (IMPERIAL_DECIMAL, "0 in")):
+        for schema, zero in ((STANDARD, "0.00 mm"), (IMPERIAL_DECIMAL, "0.00 in")):
             App.Units.setSchema(schema)
             panel = [w for w in said(f, "Warnings", figures=True) if "Smooth elastica" in w]
             self.assertIn(f"the smooth model's curve lies {zero} from them", panel[0])
         for schema in range(8):
             App.Units.setSchema(schema)
             with self.subTest(schema=schema):
-                zero = f"0 {zero_unit()}"
+                zero = f"{U.number_text(0.0)} {zero_unit()}"
                 for noise in (1.82e-11, -7.1e-15, 0.0, 9.99e-8):
                     self.assertEqual(U.figure_text(noise), zero)
                     self.assertEqual(U.say(U.figure_mark(noise, 3), figures=True), zero)
@@ -180,7 +181,7 @@ class MeasuredTextsTest(S.DocTest):
             App.Units.setSchema(schema)
             said_now = [w for w in said(f, "Warnings") if "outliers?" in w]
             self.assertEqual(len(said_now), 1, list(f.Warnings))
-            place = ", ".join(f"{v / factor:.4g}" for v in (top.x, top.y, top.z))
+            place = ", ".join(U.number_text(v / factor) for v in (top.x, top.y, top.z))
             self.assertIn(f"(the farthest at ({place}) {unit}): ", said_now[0])
 
 

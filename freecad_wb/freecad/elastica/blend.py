@@ -18,8 +18,9 @@ from .blend_g2 import g2_blend, g2_tension_reach
 from .geometry import (binding_module, edge_end, el, global_element, is_sketch,
                        nearest_parameter, np, part_bspline, plane_coordinates, to_3d)
 from .links import followed_edge
-from .units import (length_mark, length_text, length_unit_mark, per_area_mark, per_length,
-                    per_length_mark, tension_mark, tension_or_zero, tension_text,
+from .units import (length_mark, length_text, length_unit_mark, number_text, per_area_mark,
+                    per_length,
+                    per_length_mark, tension_mark, tension_or_zero,
                     tension_unit_mark)
 from .proxy import (FeatureProxy, InputProblem, add_enum, add_geometry_index, add_length,
                     add_link, add_per_area, add_property, attach_view, bound_expression,
@@ -247,12 +248,12 @@ def plural(n, word):
 
 
 def turn_text(turn):
-    """', turns 308\u00b0 clockwise' for a total turn (rad) of half a turn or more, which way
+    """', turns 308.21\u00b0 clockwise' (number_text) for a total turn (rad) of half a turn or more, which way
     seen from the plane's normal (a sketch's: as the Sketcher shows it), else '': a loop
     and its mirror image told apart (QA18gui F1)."""
     if turn is None or abs(turn) < np().pi:
         return ""
-    return (f", turns {abs(np().degrees(turn)):.0f}\u00b0 "
+    return (f", turns {number_text(abs(np().degrees(turn)))}\u00b0 "
             f"{'counter-clockwise' if turn > 0 else 'clockwise'}")
 
 
@@ -535,8 +536,7 @@ class BlendProxy(FeatureProxy):
             # when the panel opens (proxy.said)
             forces = ", ".join(per_area_mark(float(np().hypot(*f))) for f in sp.guide_forces)
             bends = plural(inflections(sp.pieces), "inflection")
-            free = " (free batten)" if tension_text(sp.tension, sp.length).startswith("0 ") \
-                else ""
+            free = "" if tension_or_zero(sp.tension, sp.length) else " (free batten)"
             # "; " parts: the panel shows one a line
             start = f"G2 from solution {i + 1} of {len(curves)}{followed}{r['g2_note']}" \
                 if curves else "G2 from the library's own start (no G1 solution at this tension)"

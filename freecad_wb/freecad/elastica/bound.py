@@ -12,6 +12,7 @@ import FreeCAD as App
 
 from .kept import is_input
 from .proxy import LENGTH, PER_AREA, InputProblem
+from .units import number_text
 
 _U = App.Units.Unit
 # what a bound value of each kind may be: (its unit, 'a <noun> is in <this>', an example,
@@ -35,10 +36,11 @@ def _words(name):
 
 
 def said(q):
-    """A quantity in the unit the schema picks, to 6 digits: not its UserString's 2 decimals
-    (0.002 1/mm^2 said "0.00 1/mm^2")."""
+    """A quantity in the unit the schema picks, to the Decimals preference as units.
+    number_text writes it: not its UserString's '0.00' of a small one (0.002 1/mm^2 said
+    "0.00 1/mm^2"; "0.0020 1/mm^2" at 2 decimals)."""
     _, factor, unit = q.getUserPreferred()
-    return f"{q.Value / factor:.6g} {unit}"
+    return f"{number_text(q.Value / factor)} {unit}"
 
 
 def expected(obj, name):

@@ -21,7 +21,7 @@ from .proxy import (EDGE_ENDS, InputProblem, abort_transaction, note_changes, no
                     save_note, saved_note, said as proxy_said)
 from .recording import edit_lines, edit_state
 from .spinboxes import BAD_RGB, DecadeBox, IntBox, NumberBox
-from .units import length_text, say, unit_names
+from .units import length_text, number_text, say, unit_names
 
 CURRENT = []        # the open panel, if any (scripts and the GUI smoke test drive it)
 DELAY_MS = 150      # recompute after this pause in editing (arrows, wheel, choices)
@@ -738,7 +738,8 @@ def show_box(box):
 
 
 def _fmt(v, unit="mm"):
-    """A value to 3 digits with its unit; a length (mm) in the user's schema (length_text)."""
+    """A value with its unit to the Decimals preference (number_text); a length (mm) in the
+    user's schema (length_text)."""
     if unit == "mm":
         return length_text(v)
-    return f"{float(v):.3g} {unit}".strip()
+    return f"{number_text(v)} {unit}".strip()

@@ -9,7 +9,8 @@ import math
 import FreeCAD as App
 from PySide import QtGui
 
-from .units import box_text, feet_inches, length_unit, plain, tension_unit, user_length
+from .units import (box_text, decimals, feet_inches, length_unit, number_text, tension_unit,
+                    user_length)
 
 BAD_RGB = "#b00"                         # panelbase.ERROR_RGB: the error line's red
 
@@ -101,10 +102,10 @@ class Bindable:
 
 
 class NumberBox(Bindable, QtGui.QDoubleSpinBox):
-    """A spin box that shows its value as typed ('0.001', '2.5e-07', not '0.00'; a length as
-    units.box_text writes it: '0.0000394 in', not '3.93701e-05 in'; any other in fixed
-    notation from 1e-6 to 1e6: a tension or curvature to 4 digits, its whole part kept, the
-    value unrounded: Tension '0.00001515 1/mm²', not '1.51519e-05'), a length,
+    """A spin box that shows its value to the Decimals preference as FreeCAD's Quantity boxes
+    (units.number_text: '151.00 mm' at 2, '151.000000 mm' at 6; a length as units.box_text
+    writes it; a value below 1 to at least that many significant digits: Tension '0.000015
+    1/mm²', Tolerance '0.000039 in', not FreeCAD's '0.00'; the value itself unrounded), a length,
     curvature or tension in the user's unit schema (units.py; the value itself stays in mm,
     1/mm, 1/mm^2), accepts scientific notation, quantities in other units and expressions as
     FreeCAD's own boxes do ('7 cm', '2.75 in', '2*35': _in_unit; '=' typed opens
@@ -151,12 +152,11 @@ class NumberBox(Bindable, QtGui.QDoubleSpinBox):
     def textFromValue(self, value):
         if self.unit == "mm":            # Building US: feet and inches, as FreeCAD's boxes
             return feet_inches(value) or box_text(value)
-        factor, unit = self.shown(value)     # fixed notation, as box_text the lengths; a
-        x = value / factor                   # quantity to 4 digits, its whole part kept (the
-        whole = math.floor(math.log10(abs(x))) + 1 if x else 0     # value stays: valueFromText)
-        number = f"{x:.{max(4, min(6, whole)) if unit else 6}g}"   # '0.00001515 1/mm²'
-        if abs(x) < 1e6:                     # '1e+06': Qt sizes the box by its range's texts
-            number = plain(number)
+        factor, unit = self.shown(value)     # to the Decimals preference, as box_text the
+        x = value / factor                   # lengths ('0.000015 1/mm²'; the value stays:
+        number = number_text(x)              # valueFromText); '-1e+06' from 1e6: Qt sizes
+        if abs(x) >= 1e6:                    # the box by its range's texts
+            number = f"{x:.{max(1, decimals())}g}"
         return f"{number} {unit}" if unit else number
 
     def _wrote(self):

@@ -20,7 +20,8 @@ from .fit_core import DISTANCE_NAMES, DISTANCES, MODEL_NAMES, MODEL_TIPS, MODELS
 from .fit_ends import CONTINUITIES, CONTINUITY_NAMES
 from .sources import THOUSANDS
 from .panelbase import CURRENT, Panel, _fmt, said_now
-from .units import area_text, figure_text, length_unit, per_length, tension_unit
+from .units import (area_text, figure_text, length_unit, number_text, per_length, tension_text,
+                    tension_unit)
 
 
 
@@ -195,7 +196,7 @@ class FitPanel(Panel):
 
     def result_text(self):
         o = self.obj
-        ks = ", ".join(f"{k:.4g}" for k in o.K)
+        ks = ", ".join(number_text(k) for k in o.K)
         n = len(o.DataPoints)
         if o.Model == "smooth":
             bs = f"B-spline within {figure_text(o.BSplineDeviation)} (degree {o.Degree})"
@@ -209,7 +210,7 @@ class FitPanel(Panel):
             # rounding noise (below 1e-9 of 1/length: a natural end's) shown as 0
             size = o.Shape.Length if not o.Shape.isNull() else 0.0
             k0, k1 = (0.0 if abs(k) * size < 1e-9 else k for k in o.EndCurvatures)
-            ends = f"<br>end \u03ba {k0 * length_unit()[0]:.4g}, {per_length(k1, 4)}"
+            ends = f"<br>end \u03ba {number_text(k0 * length_unit()[0])}, {per_length(k1)}"
         # measured lengths: rounding noise as 0 (figure_text; the properties keep the figures)
         numbers = list(getattr(o, "PointNumbers", ()))
         if numbers and numbers != list(range(1, len(numbers) + 1)):
@@ -350,8 +351,8 @@ class SplinePanel(Panel):
         unit, scale = ("N", 0.5 * ei) if ei > 0 else (f"{per_unit} \u00d7 EI/2", per)
         order = sorted(range(len(forces)), key=lambda i: -forces[i])[:self.MAX_DUCK_LINES]
         more = len(forces) - len(order)
-        items = ", ".join(f"{i + 1}: {forces[i] * scale:.3g}" for i in sorted(order))
-        guides = ", ".join(f"{v.Length * scale:.3g}" for v in o.GuideForces)
+        items = ", ".join(f"{i + 1}: {number_text(forces[i] * scale)}" for i in sorted(order))
+        guides = ", ".join(number_text(v.Length * scale) for v in o.GuideForces)
         return (f"duck forces ({unit}): {items}"
                 + (f" (the {len(order)} largest of {len(forces)})" if more else "")
                 + (f"; guide ducks (orange): {guides}" if guides else ""))
@@ -360,10 +361,11 @@ class SplinePanel(Panel):
         o = self.obj
         radius = f" (radius {_fmt(1 / o.MaxCurvature)})" if o.MaxCurvature > 0 else ""
         notes = said_now(o, 'Status').split("; ")[1:]
-        tension = B.tension_text(o.SplineTension, o.SplineLength)
+        tension = tension_text(o.SplineTension, o.SplineLength)
         lines = [f"length {_fmt(o.SplineLength)}, tension {tension}"
-                 + (" (free batten)" if tension.startswith("0 ") else ""),
-                 f"energy \u222b\u03ba\u00b2 {per_length(o.Energy, 4)}, max curvature "
+                 + (" (free batten)" if not B.tension_or_zero(o.SplineTension, o.SplineLength)
+                    else ""),
+                 f"energy \u222b\u03ba\u00b2 {per_length(o.Energy)}, max curvature "
                  f"{per_length(o.MaxCurvature)}{radius}",
                  self.forces_text(),
                  f"B-spline: {o.Poles} poles, degree {o.Degree}, within "
@@ -414,9 +416,9 @@ class EllipticBlendPanel(Panel):
         o = self.obj
         hull = "stays inside" if o.ConvexHull else "can leave"
         return (f"B-spline within {figure_text(o.BSplineDeviation)} of the curve (tolerance "
-                f"{_fmt(o.Tolerance)})<br>basis min {o.BasisMin:.3g}, condition "
-                f"{o.Condition:.3g}: the curve {hull} the hull of its control points"
-                + (f"<br>control points {o.Spread:.3g} times as far apart as the points"
+                f"{_fmt(o.Tolerance)})<br>basis min {number_text(o.BasisMin)}, condition "
+                f"{number_text(o.Condition)}: the curve {hull} the hull of its control points"
+                + (f"<br>control points {number_text(o.Spread)} times as far apart as the points"
                    if o.Mode == "interpolate" else ""))
 
 
@@ -445,18 +447,18 @@ class G2QuadPanel(Panel):
         # "-" until computed: a missing EndCurvatureError (a document from before it) or an
         # object not recomputed yet (no poles) is not an error of 0 (QA12)
         ek = getattr(o, "EndCurvatureError", None)
-        ek = (f"{ek:.2g} (relative to the source's largest curvature over the end piece)"
+        ek = (f"{number_text(ek)} (relative to the source's largest curvature over the end piece)"
               if ek is not None and o.Poles > 0 else "-")
         return (f"{o.Pieces} piece{'s' if o.Pieces != 1 else ''} (split at inflections), "
                 f"{o.Poles} poles, degree 2<br>distance from the source: "
                 f"{figure_text(o.Deviation)}<br>"
-                f"curvature jump at joints inside the pieces: {o.CurvatureJump:.1g} (G2)<br>"
-                + (f"where the pieces meet: tangents {o.JoinAngle:.2g}\u00b0 apart, curvature "
-                   f"jump {per_length(o.JoinCurvatureJump, 2)} (not G2 there)<br>"
+                f"curvature jump at joints inside the pieces: {number_text(o.CurvatureJump)} (G2)<br>"
+                + (f"where the pieces meet: tangents {number_text(o.JoinAngle)}\u00b0 apart, curvature "
+                   f"jump {per_length(o.JoinCurvatureJump)} (not G2 there)<br>"
                    if o.Pieces > 1 else "")
-                + f"tangent off the source's at its ends by {o.SourceEndTangentError:.2g}\u00b0"
+                + f"tangent off the source's at its ends by {number_text(o.SourceEndTangentError)}\u00b0"
                 + (f", at any piece's end (the inflections) by at most "
-                   f"{o.EndTangentError:.2g}\u00b0" if o.Pieces > 1 else "")
+                   f"{number_text(o.EndTangentError)}\u00b0" if o.Pieces > 1 else "")
                 + f"; end curvature by {ek}<br>{said_now(o, 'Status')}")
 
 

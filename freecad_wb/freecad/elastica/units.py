@@ -18,6 +18,43 @@ import Part
 REFERENCE_MM = 100.0
 # a unit as the parser reads it (1/in^2), where the schema writes a sign ('5.94 "')
 _UNIT_NAME = {'"': "in", "'": "ft"}
+UNITS_PREFERENCES = "User parameter:BaseApp/Preferences/Units"
+
+
+def decimals():
+    """Edit > Preferences > General > Units > Number of decimals: how many decimals FreeCAD's
+    Quantity boxes, property view and UserString write (Base::UnitsApi::getDecimals, 2 by
+    default). Read from the preference each time (FreeCAD's own copy is read at start and set
+    by its preference page: a change in a running freecadcmd reaches only the parameter)."""
+    default = int(App.Units.Quantity(1.0).Format["Precision"])
+    return max(0, App.ParamGet(UNITS_PREFERENCES).GetInt("Decimals", default))
+
+
+def number_text(x, at_least=None):
+    """A number as every panel text and box writes it (lengths in the unit the schema picks,
+    curvatures, tensions, plain figures), as FreeCAD's Base::Quantity::getUserString writes a
+    quantity: fixed notation, decimals() places ('151.00', '5.94'; '151.000000' at 6) where
+    FreeCAD's own call (App.Units.Quantity(...).UserString) writes the same for a length.
+    Where those places keep fewer than decimals() significant digits of a number below 1,
+    FreeCAD's does not suffice: it writes a tension 0.000634 1/mm^2 and a tolerance 0.001 mm
+    in inches '0.00' (its schemas scale no unit of 1/length^2 and no inch), here to as many
+    places as keep decimals() of them ('0.00063', '0.000039'); below 1e-6 in scientific
+    notation ('2.7e-07', where FreeCAD's Imperial decimal schema turns to it). ``at_least``:
+    as many significant digits at least, for a figure a text asks to type back (a tension
+    that gives a curve again: '0.00203109 1/mm\u00b2', not '0.0020')."""
+    d, x = decimals(), float(x)
+    keep = max(d, int(at_least or 0))
+    if x == 0.0 or not math.isfinite(x):
+        return f"{0.0 if x == 0.0 else x:.{d}f}"
+    lead = math.floor(math.log10(abs(x)))
+    if lead < -6:
+        return f"{x:.{max(0, keep - 1)}e}"
+    text = f"{x:.{max(d, keep - 1 - lead)}f}"
+    shown = max(d, d - 1 - lead)            # the places without at_least: a typed-back
+    while at_least and text.endswith("0") and \
+            len(text.partition(".")[2]) > shown:        # figure's own zeros not written
+        text = text[:-1]
+    return text
 
 
 def user_length(mm):
@@ -30,21 +67,13 @@ def user_length(mm):
     return float(factor), unit
 
 
-def plain(number):
-    """A number's '%g' text in fixed notation, as FreeCAD's boxes write numbers and
-    box_text the lengths ('0.0000227' for '2.27e-05', '1230' for '1.23e+03'), to the same
-    significant digits; an exponent kept below 1e-6 (where FreeCAD's Imperial decimal
-    schema turns to scientific notation)."""
-    if "e" in number and abs(float(number)) >= 1e-6:
-        return format(Decimal(number), "f")
-    return number
-
-
-def length_text(mm, digits=3):
-    """A length (mm) as text in the user's schema, to ``digits`` significant digits, in
-    fixed notation as the length boxes (plain: '151 mm', '5.94 in', '0.0000227 in')."""
+def length_text(mm, digits=None):
+    """A length (mm) as text in the user's schema, as FreeCAD's UserString writes it (the
+    unit getUserPreferred picks, number_text: '151.00 mm', '5.94 in', '0.000039 in');
+    ``digits``: the significant digits its stored marks name, of texts written before the
+    Decimals preference was followed (number_text decides)."""
     factor, unit = user_length(mm)
-    return f"{plain(f'{float(mm) / factor:.{digits}g}')} {unit}"
+    return f"{number_text(float(mm) / factor)} {unit}"
 
 
 def noise(mm):
@@ -54,10 +83,10 @@ def noise(mm):
     return abs(float(mm)) < Part.Precision.confusion()
 
 
-def figure_text(mm, digits=3):
+def figure_text(mm, digits=None):
     """A measured length (mm) as a panel says it: as length_text writes it, rounding noise
-    (noise) as FreeCAD writes it, a 0 in its unit for 0 ('0 mm', '0 in': its '0.00 mm',
-    '0.00 in'), not '1.2e-11 mm' (the feature's property keeps the figure)."""
+    (noise) as FreeCAD writes a 0 ('0.00 mm', '0.00 in'), not '1.2e-11 mm' (the feature's
+    property keeps the figure)."""
     return length_text(0.0 if noise(mm) else mm, digits)
 
 
@@ -73,18 +102,9 @@ def feet_inches(mm):
 
 
 def box_text(mm):
-    """A length (mm) as a length box shows it: in the unit the schema picks for it
-    (user_length, as Gui::QuantitySpinBox), to the significant digits of its '%.6g' text in
-    mm (at least 3 in another unit, as the messages: 151 mm '5.94 in', 7 in '7 in'), in
-    fixed notation as FreeCAD's boxes write numbers ('0.0000394 in' for 0.001 mm, where
-    they write '0.00 in'), an exponent only below 1e-6 (where FreeCAD's Imperial decimal
-    schema turns to scientific notation)."""
-    value = float(mm)
-    shown = user_length(value)
-    written = f"{value:.6g}"
-    whole = math.floor(math.log10(abs(value) / shown[0])) + 1 if value else 0
-    digits = None if whole <= 3 else min(6, whole)     # 1 km: '39370 in', not '39400 in'
-    return f"{_written_in(value, written, digits, shown)} {shown[1]}"
+    """A length (mm) as a length box shows it: as length_text (the unit the schema picks, as
+    Gui::QuantitySpinBox, number_text's decimals: '151.00 mm', '5.94 in', '1.00 \u00b5m')."""
+    return length_text(mm)
 
 
 def length_unit():
@@ -94,11 +114,11 @@ def length_unit():
     return factor, _UNIT_NAME.get(unit, unit)
 
 
-def per_length(value, digits=3):
-    """A quantity per length (1/mm: curvature, energy) as text in the schema's length unit
-    ('0.0278/mm', '0.706/in')."""
+def per_length(value, digits=None):
+    """A quantity per length (1/mm: curvature, energy) as text in the schema's length unit,
+    number_text's decimals ('0.028/mm', '0.71/in'; ``digits``: as length_text's)."""
     factor, unit = length_unit()
-    return f"{float(value) * factor:.{digits}g}/{unit}"
+    return f"{number_text(float(value) * factor)}/{unit}"
 
 
 def tension_unit():
@@ -119,19 +139,19 @@ def tension_or_zero(sigma, length):
     return 0.0 if abs(sigma) * length ** 2 < TENSION_NOISE else float(sigma)
 
 
-def tension_text(sigma, length, digits=3):
+def tension_text(sigma, length, digits=None):
     """sigma (1/mm^2) in 1/length^2 of the user's unit schema, as the Tension fields show it
-    ('0.000634 1/mm\u00b2', '0.409 1/in\u00b2'), to ``digits`` significant digits,
-    rounding noise (tension_or_zero) shown as 0."""
+    ('0.00063 1/mm\u00b2', '0.41 1/in\u00b2': number_text), to ``digits`` significant
+    digits at least (a tension to type back), rounding noise (tension_or_zero) shown as 0."""
     factor, unit = tension_unit()
-    return f"{tension_or_zero(sigma, length) * factor:.{digits}g} {unit}"
+    return f"{number_text(tension_or_zero(sigma, length) * factor, digits)} {unit}"
 
 
-def area_text(value, digits=4):
+def area_text(value, digits=None):
     """A length squared (mm^2: the comb's scale) in the square of the schema's length unit
-    ('12.5 mm\u00b2', '0.0194 in\u00b2')."""
+    ('12.50 mm\u00b2', '0.019 in\u00b2': number_text; ``digits``: as length_text's)."""
     factor, unit = length_unit()
-    return f"{float(value) / factor ** 2:.{digits}g} {unit}\u00b2"
+    return f"{number_text(float(value) / factor ** 2)} {unit}\u00b2"
 
 
 def unbroken(text):
@@ -175,9 +195,10 @@ def per_length_mark(value, digits=3, unit=True):
     return f"\x01{'K' if unit else 'k'}{float(value)!r}|{digits}\x02"
 
 
-def tension_mark(sigma, length, digits=3):
-    """A tension (1/mm^2) written by say() as tension_text writes it."""
-    return f"\x01T{float(sigma)!r}|{float(length)!r}|{digits}\x02"
+def tension_mark(sigma, length, digits=None):
+    """A tension (1/mm^2) written by say() as tension_text writes it (``digits``: at least
+    as many significant digits, a tension the text asks to type back)."""
+    return f"\x01T{float(sigma)!r}|{float(length)!r}|{'' if digits is None else int(digits)}\x02"
 
 
 def per_area_mark(value, digits=3):
@@ -260,14 +281,9 @@ def figure_mark(mm, digits=None, with_unit=True):
 
 
 def _written_in(value, written, digits, shown):
-    """``value`` (mm; ``written``: its text in mm) as a number in ``shown`` = (factor, unit):
-    under mm as written (to ``digits`` when given), else to ``digits`` significant digits
-    (None: written's, at least 3); in fixed notation (plain)."""
-    factor, unit = shown
-    if factor == 1.0 and unit == "mm":
-        return plain(written if not digits else f"{value:.{int(digits)}g}")
-    n = int(digits) if digits else max(3, len(re.sub(r"e.*|[^0-9]", "", written).lstrip("0")))
-    return plain(f"{value / factor:.{n}g}")
+    """``value`` (mm) as a number in ``shown`` = (factor, unit), number_text's decimals
+    (``written``, its text in mm, and ``digits``: the marks' own, of texts stored before)."""
+    return number_text(value / shown[0])
 
 
 def _exact(args, with_unit, shown=None, figures=False):
@@ -304,15 +320,15 @@ def _range(match, figures=False):
 def _said(match, figures=False):
     kind, args = match.group(1), match.group(2).split("|")
     if kind == "L":
-        return length_text(float(args[0]), int(args[1]))
+        return length_text(float(args[0]))
     if kind == "K":
-        return per_length(float(args[0]), int(args[1]))
+        return per_length(float(args[0]))
     if kind == "k":
-        return f"{float(args[0]) * length_unit()[0]:.{int(args[1])}g}"
+        return number_text(float(args[0]) * length_unit()[0])
     if kind == "T":
-        return tension_text(float(args[0]), float(args[1]), int(args[2]))
+        return tension_text(float(args[0]), float(args[1]), int(args[2]) if args[2] else None)
     if kind == "N":
-        return f"{float(args[0]) * tension_unit()[0]:.{int(args[1])}g}"
+        return number_text(float(args[0]) * tension_unit()[0])
     if kind == "u":
         return length_unit()[1]
     if kind == "w":
