@@ -70,10 +70,10 @@ class SplineEndSenseTest(S.DocTest):
                     self.assertAlmostEqual(k1, 1.0 / RADIUS, delta=1e-6 / RADIUS)
                 said = " ".join(s.Warnings)
                 if gap:
-                    self.assertIn("31 mm from the last point (its start vertex)", said)
+                    self.assertIn("31.01 mm from the last point (its start vertex)", said)
                     self.assertIn("running into the edge as at its start vertex", said)
                     self.assertIn("bends 97.6 deg away from its last span", said)
-                    self.assertIn("21.5 mm from the first point (its end vertex)", said)
+                    self.assertIn("21.54 mm from the first point (its end vertex)", said)
                     self.assertIn("does not meet it", said)
                 else:
                     self.assertNotIn("the end edge", said.lower())

@@ -38,7 +38,7 @@ class SplineOutlineTest(S.DocTest):
         s = self.spline(oval())
         said = hints(s)
         self.assertEqual(len(said), 1, s.Warnings)
-        self.assertIn("first and last points are 16.2 mm apart", said[0])
+        self.assertIn("first and last points are 16.24 mm apart", said[0])
         self.assertIn("its ends run 37.5 deg apart", said[0])
         self.assertIn("set Closed for a closed batten", s.Status)
         s.Closed = True
