@@ -24,8 +24,8 @@ from typing import Mapping, Optional, Union
 
 import numpy as np
 
-from ._ffi import (DomainError, NotConvergedError, SingularError, as_int, as_point_array, as_points, as_real,
-                   as_real_array, check, dptr, ffi, lib, warn_if_degrees)
+from ._ffi import (DomainError, NotConvergedError, SingularError, as_int, as_point_array, as_real,
+                   as_real_array, check, checked_points, dptr, ffi, lib, warn_if_degrees)
 from ._interrupt import call
 from ._median import median
 from .core import DISCRETE_PARAMS, SMOOTH_PARAMS, DiscreteElastica, SmoothElastica
@@ -602,7 +602,7 @@ def _fit(points, model: str = "discrete", fixed: Optional[Mapping[str, float]] =
                          "el.fit(xy) (frame.to_3d maps back), or el.fit_keyline(points); a third "
                          "column that is no coordinate (an id, an intensity): pass "
                          "points[:, :2]")
-    pts = as_points(pts, "points", 2)
+    pts = checked_points(pts, "points", 2)
     n = pts.shape[0]
     if n < 4:
         raise ValueError(f"fit: need at least 4 points, got {n}")

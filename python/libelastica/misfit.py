@@ -579,15 +579,17 @@ def fit_outliers(r, free_distances=None) -> np.ndarray:
 def _fit_outliers(r, free_distances=None):
     """:func:`fit_outliers` with stray_point's figures (index, distance, noise, gain) where
     it named a stray point, else None."""
-    from .fit import far_points
-    from .stray import stray_point
+    from .fit import OUTLIER_MIN_POINTS, far_points
     if r.distances is None:
         return np.empty(0, dtype=np.intp), None
     if free_distances is None and r.constraints and getattr(r, "free", None) is not None:
         free_distances = r.free.distances
     far = far_points(r.distances, r.points, free_distances=free_distances)
-    if len(far) or r.constraints:
+    # (stray_point names none among OUTLIER_MIN_POINTS points or more: neither asked nor
+    # imported there, el.fit's every fit of as many; a function-level import costs a lookup)
+    if len(far) or r.constraints or (r.points is not None and len(r.points) >= OUTLIER_MIN_POINTS):
         return far, None
+    from .stray import stray_point
     stray = stray_point(r)
     return (far, None) if stray is None else (np.array([stray[0]], dtype=np.intp), stray)
 
