@@ -430,6 +430,9 @@ typedef struct el_fit_options {
     double start_curvature, end_curvature;   /* 1/input units */
     double length_range[2];                  /* [lo, hi], 0 <= lo <= hi (hi may be HUGE_VAL) */
     double k_range[2];                       /* [lo, hi]; the smooth k is signed (orientation) */
+    int exhaustive;      /* 1: with constraint rows, every start's Ipopt run goes to its own end (the plain
+                            path, for comparison); 0 (default): a later start's run is stopped once it is near
+                            the rows and cannot reach the kept fit's objective at its recent rate */
 } el_fit_options;
 
 /* Fill *opt with the defaults above. */

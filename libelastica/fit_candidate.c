@@ -138,11 +138,17 @@ void el__fit_ob_restore(fit_objective *ob, const fit_ob_state *k)
  * 4e-14, QA). Ipopt in two stages too, to the rows halfway (rows_towards) and then to them,
  * from the same start (start: the objective as the first run began, x0 its point); the fit
  * *r is replaced where that one meets the rows and is lower by more than the rounding of f,
- * else the objective is put back as the first run left it (kept). EL_OK or EL_ENOMEM. */
+ * else the objective is put back as the first run left it (kept). The second run matters
+ * only below *r's f where *r meets the rows, and below best_f where the run is held to the
+ * kept fit (ob->rows_cap, fit_choose.c): held to the lower of them (fit_ipopt.c's rate test
+ * at iterates near the rows) unless o->exhaustive. Measured on sine-like scans of
+ * 200-400 noisy points held G1 at both ends: these runs were 80 % of the Ipopt iterations,
+ * 200 to max_iter at 15-65 x *r's f. EL_OK or EL_ENOMEM. */
 static int rows_halfway(fit_objective *ob, const el_fit_options *o, const fit_constraints *con,
                         const double *xl, const double *xu, const double *x0, const ob_state *start,
-                        fit_candidate *r, double *tmp)
+                        double best_f, fit_candidate *r, double *tmp)
 {
+    const int r_meets = rows_violation(ob, con, r->x, tmp) <= 1e-10;
     const int nx = ob->map.nx;
     ob_state kept;
     if (el__fit_ob_save(ob, &kept)) return EL_ENOMEM;
@@ -155,10 +161,18 @@ static int rows_halfway(fit_objective *ob, const el_fit_options *o, const fit_co
     int st = rows_towards(ob, con, x, 0.5, &half, tmp);
     if (st == EL_OK) st = el__fit_ipopt(ob, xl, xu, &half, o, x, &io, tmp);
     const int first = st == EL_OK ? io.iters : 0;
+    const int capped = ob->rows_cap;
+    const double ceiling = fmin(capped ? best_f : HUGE_VAL, r_meets ? r->f : HUGE_VAL);
+    if (!o->exhaustive && ceiling < HUGE_VAL) {
+        ob->f_ceiling = ceiling;
+        ob->rows_cap = 1;
+    }
     if (st == EL_OK) st = el__fit_ipopt(ob, xl, xu, con, o, x, &io, tmp);
+    ob->f_ceiling = HUGE_VAL;
+    ob->rows_cap = capped;
     if (st == EL_ENOMEM || st == EL_EINTERNAL) { free(kept.buf); return st; }
     const int meets = st == EL_OK && rows_violation(ob, con, x, tmp) <= 1e-10;
-    if (meets && (!(rows_violation(ob, con, r->x, tmp) <= 1e-10) || io.f < r->f * (1.0 - 1e-9))) {
+    if (meets && (!r_meets || io.f < r->f * (1.0 - 1e-9))) {
         memcpy(r->x, x, sizeof(double) * (size_t)nx);
         r->f = io.f;
         r->ipopt_status = io.ipopt_status;
@@ -336,8 +350,10 @@ int el__fit_solve_candidate(fit_objective *ob, const el_fit_options *o, const fi
      * and without rows (bounds alone: every iterate within them, f comparable). Measured:
      * 1000 points of a curve, the discrete model with a k range excluding the curve's
      * (test_fit_lbfgs.c): two later guesses each ran Ipopt to max_iter from outside the
-     * range, 4-9 s each on a polygon far from the points */
-    if (o->limited_memory || !need_ipopt) ob->f_ceiling = best_f;
+     * range, 4-9 s each on a polygon far from the points. With rows where the caller asks
+     * (ob->rows_cap, fit_choose.c: a later start while the kept fit meets them), at the
+     * iterates near them */
+    if (o->limited_memory || !need_ipopt || ob->rows_cap) ob->f_ceiling = best_f;
     /* the continuation's start with rows that leave the fit free (fewer than its variables:
      * where as many determine it, its curves are isolated, chosen among by other rules; a
      * 9-point sketch held at 7 conditions went from a coil of 100 x its length, rms 0.0023,
@@ -388,7 +404,7 @@ int el__fit_solve_candidate(fit_objective *ob, const el_fit_options *o, const fi
         r->status = EL_OK;
     /* a zero-residual fit that Ipopt could not certify (its step became tiny) is a fit */
     if (r->status == EL_ENOCONV && r->f <= FIT_EXACT_F) r->status = EL_OK;
-    if (halfway && st == EL_OK) st = rows_halfway(ob, o, con, xl, xu, xstart, &start, r, tmp);
+    if (halfway && st == EL_OK) st = rows_halfway(ob, o, con, xl, xu, xstart, &start, best_f, r, tmp);
     free(start.buf);
     return st == EL_EINTERNAL || st == EL_ENOMEM ? st : EL_OK;
 }

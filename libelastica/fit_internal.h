@@ -154,6 +154,10 @@ typedef struct fit_objective {
      * (an earlier guess's) at its recent rate within its remaining iterations
      * (fit_lm.c); HUGE_VAL (el__fit_objective_init): never */
     double f_ceiling;
+    /* with constraint rows: Ipopt's run is held to f_ceiling too, at iterates near the rows
+     * (fit_ipopt.c, cb_iter; set by fit_choose.c for a later start while the kept fit meets
+     * them, and by rows_halfway, fit_candidate.c; 0, el__fit_objective_init: never) */
+    int rows_cap;
     /* smooth orthogonal: a fit from the paired start that ends above this objective (far
      * above the data's noise, fit_starts.c) is fitted from its guess's own feet too
      * (fit_candidate.c); HUGE_VAL (el__fit_objective_init): never */

@@ -52,6 +52,10 @@ static pthread_mutex_t ipopt_lock = PTHREAD_MUTEX_INITIALIZER;
 
 enum { LBFGS_FLAT = 3, LBFGS_RATE_SPAN = 10 };     /* cb_iter */
 #define FIT_ROWS_TOL 1e-12     /* constr_viol_tol: the rows met (normalised units) */
+/* cb_iter's rate test with rows (o->rows_cap) at iterates within this of them (Ipopt's inf_pr,
+ * normalised units: 1e-4 of the points' rms radius, Ipopt's own default constr_viol_tol; the
+ * runs it stops crept along the rows at 1e-5 .. 1e-13 off them, 15-65 x the kept f) */
+#define ROWS_NEAR 1e-4
 
 typedef struct ipctx {
     fit_objective *o;
@@ -72,6 +76,7 @@ typedef struct ipctx {
     double last_f, recent[LBFGS_RATE_SPAN];     /* cb_iter's stall and rate tests */
     int flat, n_iter, max_iter;
     int free;               /* L-BFGS without constraint rows or bounds: cb_iter stops it */
+    int rows_cap;           /* with rows: the rate test at iterates that meet them (o->rows_cap) */
     double rows_x[FIT_MAXX], rows[FIT_NCON];    /* the constraint rows at rows_x (keep_rows) */
     int have_rows;
 } ipctx;
@@ -351,20 +356,26 @@ static int hopeless(ipctx *c, double f)
  * - hopeless against an earlier guess (o->f_ceiling): fit_lm.c's rate test.
  * The exact Hessian's runs without rows stop by the rate test alone (on Ipopt's objective:
  * with bounds, later guesses of 1000 points crept 200 iterations from outside a k range,
- * 4-9 s each, test_fit_lbfgs.c's k range); with rows Ipopt's own tests.
+ * 4-9 s each, test_fit_lbfgs.c's k range); with rows Ipopt's own tests, and, where the caller
+ * holds the run to a kept fit that meets the rows (o->rows_cap, fit_choose.c), the rate test
+ * on Ipopt's objective at the iterates near them too (inf_pr within ROWS_NEAR, outside
+ * the restoration phase: an iterate off the rows can lie below every fit that meets them).
+ * Measured on sine-like scans of 200-400 noisy points held G1 at both ends: later guesses'
+ * runs crept along the rows at 15-65 x the kept fit's objective, ~3 ms an iteration.
  */
 static Bool cb_iter(Index alg_mod, Index iter, Number obj, Number inf_pr, Number inf_du, Number mu,
                     Number d_norm, Number reg, Number alpha_du, Number alpha_pr, Index ls,
                     UserDataPtr ud)
 {
-    (void)obj; (void)inf_pr; (void)inf_du; (void)mu; (void)d_norm; (void)reg;
+    (void)obj; (void)inf_du; (void)mu; (void)d_norm; (void)reg;
     (void)alpha_du; (void)alpha_pr; (void)ls;
     ipctx *c = ud;
     c->iters = iter;
     if (!c->free) {
         /* the exact Hessian without rows (bounds alone, every iterate within them): the
          * rate test on Ipopt's objective (an earlier f need not meet rows) */
-        return c->m > 0 || alg_mod != 0 || !hopeless(c, obj);
+        if (c->m > 0 && !(c->rows_cap && inf_pr <= ROWS_NEAR)) return TRUE;
+        return alg_mod != 0 || !hopeless(c, obj);
     }
     if (alg_mod != 0 || !c->have_g) return TRUE;
     const double f = c->gval.f;
@@ -443,6 +454,7 @@ int el__fit_ipopt(fit_objective *o, const double *xl, const double *xu, const fi
         return EL_OK;
     }
     c.free = opt->limited_memory && c.m == 0;
+    c.rows_cap = o->rows_cap && c.m > 0;
     for (int j = 0; j < nx; j++) c.free &= !isfinite(xl[j]) && !isfinite(xu[j]);
     if (fit_has_feet(o) && !(c.anchor = malloc(sizeof(double) * o->n))) return EL_ENOMEM;
     const int saved = o->exact_feet;

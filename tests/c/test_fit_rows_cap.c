@@ -1,0 +1,243 @@
+/* Held fits' runs held to the kept fit's objective (el_fit_options.exhaustive = 0, the
+ * default: fit_choose.c's rows_capped, fit_candidate.c's rows_halfway, fit_ipopt.c's rate
+ * test at iterates near the rows) against the plain path that runs every start to its end
+ * (exhaustive = 1): the same fit or a lower one, meeting the same constraints, never a
+ * status the plain path does not reach. Kinds: joined G1 at both ends (smooth, discrete), G2
+ * at the start and G1 at the end (smooth), pinned at both ends, the natural batten
+ * (discrete); data: a noisy sine-like scan with 2-3 inflections (no elastica: the held fit
+ * well above the free one, where the later starts crept), a noisy elastica scan (k 0.8,
+ * inflectional) and a sparse uneven sketch of a non-inflectional one (k 1.3); at the scale
+ * of the points and at 1e-6 and 1e6 of it. */
+#include "testutil.h"
+#include "sine_scan_held.h"
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+
+enum { NSCAN = SINE_SCAN_N > 150 ? SINE_SCAN_N : 150, NSKETCH = 12 };
+
+typedef struct held_data {
+    double xy[2 * NSCAN];
+    size_t n;
+    double p0[2], p1[2], t0, t1, k0, k1;     /* the end conditions the kinds hold */
+} held_data;
+
+/* A sine-like scan: y = a sin(3 pi t + 0.2)(1 + 0.2 t) over x = 100 t, t uneven, noise
+ * 0.3 (deterministic), its ends' own points, tangents and curvatures (of the sine). */
+static void sine_scan(held_data *D)
+{
+    const double a = 12.0, w = 3.0 * M_PI, ph = 0.2;
+    D->n = NSCAN;
+    for (size_t i = 0; i < NSCAN; i++) {
+        const double t = pow((double)i / (NSCAN - 1), 1.2);
+        D->xy[2 * i] = 100.0 * t + 0.3 * sin(12.9898 * (double)i);
+        D->xy[2 * i + 1] = a * sin(w * t + ph) * (1.0 + 0.2 * t) + 0.3 * cos(78.233 * (double)i);
+    }
+    for (int e = 0; e < 2; e++) {
+        const double t = e, y = a * sin(w * t + ph) * (1.0 + 0.2 * t);
+        const double dy = a * (w * cos(w * t + ph) * (1.0 + 0.2 * t) + 0.2 * sin(w * t + ph));
+        const double ddy = a * (-w * w * sin(w * t + ph) * (1.0 + 0.2 * t) + 0.4 * w * cos(w * t + ph));
+        double *p = e ? D->p1 : D->p0;
+        p[0] = 100.0 * t;
+        p[1] = y;
+        *(e ? &D->t1 : &D->t0) = atan2(dy, 100.0);
+        *(e ? &D->k1 : &D->k0) = 100.0 * ddy / pow(100.0 * 100.0 + dy * dy, 1.5);
+    }
+}
+
+/* n points of the smooth curve c at uneven arc lengths (the ends included), noise amp
+ * (deterministic); the curve's own end conditions. */
+static void elastica_scan(held_data *D, const el_smooth_params *c, size_t n, double amp)
+{
+    double s[NSCAN], th[2], ka[2], e[4];
+    D->n = n;
+    for (size_t i = 0; i < n; i++) s[i] = c->length * pow((double)i / (double)(n - 1), 1.3);
+    ck_assert_int_eq(el_smooth_eval(c, n, s, D->xy, NULL, NULL), EL_OK);
+    for (size_t i = 1; i + 1 < n; i++) {
+        D->xy[2 * i] += amp * sin(12.9898 * (double)i);
+        D->xy[2 * i + 1] += amp * cos(78.233 * (double)i);
+    }
+    const double se[2] = {0.0, c->length};
+    ck_assert_int_eq(el_smooth_eval(c, 2, se, e, th, ka), EL_OK);
+    memcpy(D->p0, e, sizeof D->p0);
+    memcpy(D->p1, e + 2, sizeof D->p1);
+    D->t0 = th[0]; D->t1 = th[1]; D->k0 = ka[0]; D->k1 = ka[1];
+}
+
+/* D scaled by f about the origin. */
+static void scaled(held_data *D, double f)
+{
+    for (size_t i = 0; i < 2 * D->n; i++) D->xy[i] *= f;
+    for (int c = 0; c < 2; c++) { D->p0[c] *= f; D->p1[c] *= f; }
+    D->k0 /= f;
+    D->k1 /= f;
+}
+
+enum { G1_ENDS, G2_G1, PINNED, NATURAL };
+
+static void kind_options(const held_data *D, int kind, int exhaustive, el_fit_options *o)
+{
+    el_fit_options_defaults(o);
+    o->exhaustive = exhaustive;
+    o->constraints = EL_CONSTRAIN_START_POINT | EL_CONSTRAIN_END_POINT;
+    memcpy(o->start_point, D->p0, sizeof o->start_point);
+    memcpy(o->end_point, D->p1, sizeof o->end_point);
+    if (kind == G1_ENDS || kind == G2_G1) {
+        o->constraints |= EL_CONSTRAIN_START_TANGENT | EL_CONSTRAIN_END_TANGENT;
+        o->start_tangent = D->t0;
+        o->end_tangent = D->t1;
+    }
+    if (kind == G2_G1) {
+        o->constraints |= EL_CONSTRAIN_START_CURVATURE;
+        o->start_curvature = D->k0;
+    }
+    if (kind == NATURAL) {
+        o->constraints |= EL_CONSTRAIN_START_CURVATURE | EL_CONSTRAIN_END_CURVATURE;
+        o->start_curvature = o->end_curvature = 0.0;
+    }
+}
+
+/* One kind fitted both ways: the held fit's rms at most the plain one's (to 1e-9 of it), its
+ * status EL_OK wherever the plain one's is, the same constraint named where neither meets
+ * them; the iterations of both into its (NULL: not asked). */
+static void compare_its(const held_data *D, int model, int kind, const char *what, int *its)
+{
+    el_fit_options fast, plain;
+    kind_options(D, kind, 0, &fast);
+    kind_options(D, kind, 1, &plain);
+    double rf, rp;
+    int sf, sp, cf, cp;
+    if (model == 0) {
+        el_fit_smooth_result a, b;
+        memset(&a, 0, sizeof a);
+        memset(&b, 0, sizeof b);
+        sf = el_fit_smooth(D->xy, D->n, &fast, NULL, &a, NULL, NULL);
+        sp = el_fit_smooth(D->xy, D->n, &plain, NULL, &b, NULL, NULL);
+        rf = a.rms; rp = b.rms; cf = a.constraint; cp = b.constraint;
+        if (its) { its[0] = a.iterations; its[1] = b.iterations; }
+    } else {
+        el_fit_discrete_result a, b;
+        memset(&a, 0, sizeof a);
+        memset(&b, 0, sizeof b);
+        sf = el_fit_discrete(D->xy, D->n, &fast, NULL, &a, NULL, NULL);
+        sp = el_fit_discrete(D->xy, D->n, &plain, NULL, &b, NULL, NULL);
+        rf = a.rms; rp = b.rms; cf = a.constraint; cp = b.constraint;
+        if (its) { its[0] = a.iterations; its[1] = b.iterations; }
+    }
+    if (sp == EL_OK) {
+        ck_assert_msg(sf == EL_OK, "%s: status %d where the plain path's is EL_OK", what, sf);
+        ck_assert_msg(rf <= rp * (1.0 + 1e-9), "%s: rms %.17g above the plain path's %.17g", what, rf, rp);
+    } else if (sf != EL_OK) {
+        ck_assert_msg(sf == sp && cf == cp, "%s: status %d (constraint %d), plain %d (%d)", what, sf, cf,
+                      sp, cp);
+    }
+}
+
+static void compare(const held_data *D, int model, int kind, const char *what)
+{
+    compare_its(D, model, kind, what, NULL);
+}
+
+static void all_kinds(const held_data *D, const char *data, int sparse)
+{
+    char what[96];
+    static const char *kinds[] = {"G1 ends", "G2 start G1 end", "pinned", "natural"};
+    for (int kind = G1_ENDS; kind <= NATURAL; kind++)
+        for (int model = 0; model < 2; model++) {
+            /* the discrete start curvature other than 0 is a row of its own; the natural
+             * batten's smooth fit searches its family whole (no rows): discrete only */
+            if ((kind == G2_G1 && model == 1) || (kind == NATURAL && model == 0)) continue;
+            if (!sparse && kind == PINNED) continue;      /* no rows: nothing held */
+            snprintf(what, sizeof what, "%s, %s, %s", data, kinds[kind], model ? "discrete" : "smooth");
+            compare(D, model, kind, what);
+        }
+}
+
+START_TEST(test_sine_scan)
+{
+    static const double scales[] = {1.0, 1e-6, 1e6};
+    for (int a = 0; a < 3; a++) {
+        held_data D;
+        sine_scan(&D);
+        scaled(&D, scales[a]);
+        char what[48];
+        snprintf(what, sizeof what, "sine scan x %g", scales[a]);
+        all_kinds(&D, what, 0);
+    }
+}
+END_TEST
+
+/* The sweep's scan (sine_scan_held.h), G1 at both ends: the smooth fit's runs the kept fit
+ * holds stop early (fewer iterations in all, the kept fit the same: main's rms 1.28601 smooth,
+ * 1.28661 discrete), at its scale and at 1e-6 and 1e6 of it. */
+START_TEST(test_sweep_scan)
+{
+    static const double scales[] = {1.0, 1e-6, 1e6};
+    for (int a = 0; a < 3; a++) {
+        held_data D;
+        D.n = SINE_SCAN_N;
+        memcpy(D.xy, SINE_SCAN_XY, sizeof SINE_SCAN_XY);
+        memcpy(D.p0, SINE_SCAN_P0, sizeof D.p0);
+        memcpy(D.p1, SINE_SCAN_P1, sizeof D.p1);
+        D.t0 = SINE_SCAN_T0;
+        D.t1 = SINE_SCAN_T1;
+        D.k0 = D.k1 = 0.0;
+        scaled(&D, scales[a]);
+        for (int model = 0; model < 2; model++) {
+            char what[64];
+            int its[2];
+            snprintf(what, sizeof what, "sweep's scan x %g, G1 ends, %s", scales[a], model ? "discrete" : "smooth");
+            compare_its(&D, model, G1_ENDS, what, its);
+            /* smooth: its later guesses' runs stopped (the discrete fit's ran as before) */
+            if (model == 0)
+                ck_assert_msg(its[0] < its[1], "%s: %d iterations, the plain path %d", what, its[0], its[1]);
+        }
+    }
+}
+END_TEST
+
+START_TEST(test_elastica_scan)
+{
+    static const double scales[] = {1.0, 1e-6, 1e6};
+    const double L = 100.0, w = 5.0 * 1.995 / L;       /* k 0.8: K(0.8) = 1.995, 2.5 waves */
+    const el_smooth_params c = {0.0, 0.0, 0.3, w * w, 0.8, -0.4, L};
+    for (int a = 0; a < 3; a++) {
+        held_data D;
+        elastica_scan(&D, &c, NSCAN, 0.4);
+        scaled(&D, scales[a]);
+        char what[48];
+        snprintf(what, sizeof what, "elastica scan x %g", scales[a]);
+        all_kinds(&D, what, 0);
+    }
+}
+END_TEST
+
+START_TEST(test_sparse_sketch)
+{
+    static const double scales[] = {1.0, 1e-6, 1e6};
+    const el_smooth_params c = {1.0, -2.0, -0.7, 4.0, 1.3, 0.2, 1.0};     /* k 1.3: no inflection */
+    for (int a = 0; a < 3; a++) {
+        held_data D;
+        elastica_scan(&D, &c, NSKETCH, 0.004);
+        scaled(&D, scales[a]);
+        char what[48];
+        snprintf(what, sizeof what, "sparse sketch x %g", scales[a]);
+        all_kinds(&D, what, 1);
+    }
+}
+END_TEST
+
+static Suite *suite(void)
+{
+    Suite *s = suite_create("fit rows cap");
+    TCase *tc = tcase_create("core");
+    tcase_set_timeout(tc, 300);
+    tcase_add_test(tc, test_sine_scan);
+    tcase_add_test(tc, test_sweep_scan);
+    tcase_add_test(tc, test_elastica_scan);
+    tcase_add_test(tc, test_sparse_sketch);
+    suite_add_tcase(s, tc);
+    return s;
+}
+
+int main(void) { return test_run_suite(suite()); }
