@@ -113,5 +113,31 @@ class SplineEndSenseTest(S.DocTest):
         self.assertIn("as at its end vertex", " ".join(s.Warnings))
 
 
+    def test_a_guide_beside_the_points_names_its_other_vertex(self):
+        """A straight guide edge beside the ducks, parallel to their run, nearest at its far
+        end (100, 20) to the last duck (100, 0): running into it there turns the batten back
+        176 deg; the warning says that joined at its other vertex it runs the other way, and
+        that end (EndEdgeAt) gives the edge's own direction, +x, without a bend (review revB)."""
+        sk = self.doc.addObject("Sketcher::SketchObject", "Guide")
+        sk.addGeometry(Part.LineSegment(App.Vector(0, 20, 0), App.Vector(100, 20, 0)), False)
+        self.doc.recompute()
+        pts = S.points_sketch(self.doc, [(0, 0), (30, 5), (60, 3), (100, 0)], "Ducks",
+                              placement=App.Placement())
+        s = Sp.make(self.doc, [(pts, [])], EndCondition="tangent", EndEdge=(sk, "Edge1"),
+                    Tension=1e-4)
+        self.doc.recompute()
+        said = " ".join(s.Warnings)
+        self.assertIn("bends 176 deg away from its last span (joined at its start vertex it "
+                      "runs the other way: EndEdgeAt = start vertex)", said)
+        s.EndEdgeAt = "start vertex"
+        self.doc.recompute()
+        self.assertTrue(s.Status.startswith("ok"), s.Status)
+        self.assertLess(math.degrees(self.ends(s)[1].getAngle(App.Vector(1, 0, 0))), 1e-7)
+        said = " ".join(s.Warnings)
+        self.assertIn("running into the edge as at its start vertex", said)
+        self.assertNotIn("bends", said)
+        self.assertNotIn("loops", said)
+
+
 if __name__ == "__main__":
     unittest.main()

@@ -72,7 +72,9 @@ def gap_caution(c, j, what):
     'the start edge' / 'the end edge') whose edge does not touch its point: which of the
     edge's points lends what, in which sense, that the spline does not meet it, and where
     the spline bends more than a right angle from its end span to take that sense (the
-    edge's end lies back or aside of the points: the bend is the edge's, never a reversal)."""
+    edge's end lies back or aside of the points: the bend is the edge's, never a reversal),
+    and, for an open edge, that joined at its other vertex it runs the other way (a guide beside
+    the points, nearest at its far end: its nearest vertex turns the batten back on itself)."""
     point = "first" if j == 0 else "last"
     taken = "direction and curvature" if c["condition"] == "G2" else "direction"
     if c["u"] is None:
@@ -88,6 +90,10 @@ def gap_caution(c, j, what):
         taken = ""
     bend = (f"; to do so it bends {c['turn']:.3g} deg away from its {point} span"
             if c["turn"] > 90.0 else "")
+    if bend and c["u"] is None:    # the other vertex lends the other sense (a guide beside)
+        other = "start vertex" if c["at_end"] else "end vertex"
+        bend += (f" (joined at its {other} it runs the other way: "
+                 f"{'Start' if j == 0 else 'End'}EdgeAt = {other})")
     return (f"{where} is {length_mark(c['gap'])} from the {point} point{vertex}: the spline "
             f"{sense}{f' (its {taken})' if taken else ''} but does not meet it{bend}; to join, "
             f"make the {point} point {on} (pick it, or constrain them coincident)")
