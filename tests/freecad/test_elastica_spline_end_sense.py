@@ -113,6 +113,34 @@ class SplineEndSenseTest(S.DocTest):
         self.assertIn("as at its end vertex", " ".join(s.Warnings))
 
 
+    def test_a_start_short_of_the_arc_leaves_out_of_it(self):
+        """The QA's case mirrored (review revB): the ducks reversed, the arc the START edge,
+        31 mm from the first duck. The spline leaves the first point continuing the arc out
+        of its start vertex (0 deg off -t(200 deg); on 2c350ef^ the chord turned it 180), G2
+        with the arc's curvature run backwards (signed -1/60 about the sketch's normal), with
+        and without the gap."""
+        arc = self.arc
+        n = self.profile.Placement.Rotation.multVec(App.Vector(0, 0, 1))
+        out = -App.Vector(arc.tangentAt(arc.FirstParameter))
+
+        def signed(e, u):
+            d1, d2 = e.derivative1At(u), e.derivative2At(u)
+            return d1.cross(d2).dot(n) / d1.Length ** 3
+        on_vertex = [arc_point(ARC[0])] + DUCKS[::-1][1:]
+        for ducks in (DUCKS[::-1], on_vertex):
+            for condition in ("tangent", "G2"):
+                pts = S.points_sketch(self.doc, ducks, "Ducks")
+                s = Sp.make(self.doc, [(pts, [])], StartCondition=condition,
+                            StartEdge=(self.profile, "Edge2"))
+                self.doc.recompute()
+                self.assertTrue(s.Status.startswith("ok"), s.Status)
+                e = s.Shape.Edges[0]
+                t0 = App.Vector(e.tangentAt(e.FirstParameter))
+                self.assertLess(math.degrees(t0.getAngle(out)), 1e-7, (condition, ducks[0]))
+                if condition == "G2":
+                    self.assertAlmostEqual(signed(e, e.FirstParameter), -1.0 / RADIUS,
+                                           delta=1e-6 / RADIUS)
+
     def test_a_guide_beside_the_points_names_its_other_vertex(self):
         """A straight guide edge beside the ducks, parallel to their run, nearest at its far
         end (100, 20) to the last duck (100, 0): running into it there turns the batten back
