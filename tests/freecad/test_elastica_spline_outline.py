@@ -40,6 +40,9 @@ class SplineOutlineTest(S.DocTest):
         self.assertEqual(len(said), 1, s.Warnings)
         self.assertIn("first and last points are 16.24 mm apart", said[0])
         self.assertIn("its ends run 37.5 deg apart", said[0])
+        self.assertIn("(the outline 299.1", said[0])   # its diameter 299.11, not the box 348.89
+        turned = [(x * 0.6 - y * 0.8, x * 0.8 + y * 0.6) for x, y in oval()]
+        self.assertIn("(the outline 299.1", hints(self.spline(turned))[0])
         self.assertIn("set Closed for a closed batten", s.Status)
         s.Closed = True
         self.doc.recompute()
@@ -58,7 +61,7 @@ class SplineOutlineTest(S.DocTest):
             pts = np.array(xy[:len(xy) - drop])
             gap = float(np.hypot(*(pts[-1] - pts[0])))
             longest = float(np.max(np.hypot(*np.diff(pts, axis=0).T)))
-            size = float(np.hypot(*(pts.max(axis=0) - pts.min(axis=0))))
+            size = max(math.dist(a, b) for a in pts for b in pts)    # the diameter
             d = np.diff(pts, axis=0)
             h = np.arctan2(d[:, 1], d[:, 0])
             turning = abs(math.degrees(np.sum(np.remainder(np.diff(h) + math.pi, 2 * math.pi)

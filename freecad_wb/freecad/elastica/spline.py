@@ -111,7 +111,7 @@ def closing_hint(xy, sp):
     and last points nearly meet (an outline drawn round without repeating its first point,
     QA qagui F9: 24 points of an oval 300 x 180 mm, the ends 16.2 mm apart, their tangents
     37.5 deg): their gap no longer than the longest span between the points and at most
-    NEAR_CLOSE of the points' extent (the diagonal of their box), the polygon through them
+    NEAR_CLOSE of the outline's size (its diameter), the polygon through them
     turning GOES_ROUND deg or more (the QA's oval 311; a hairpin's 175: not). Sketcher's
     B-spline by points asks periodic or not as it is drawn; here Closed says it: [the hint]
     or []."""
@@ -120,7 +120,13 @@ def closing_hint(xy, sp):
         return []
     gap = float(n.hypot(*(xy[-1] - xy[0])))
     longest = float(n.max(n.hypot(*n.diff(xy, axis=0).T)))
-    size = float(n.hypot(*(xy.max(axis=0) - xy.min(axis=0))))
+    # the outline's size "across": its diameter (largest distance between two points), as
+    # the largest width over 180 directions 1 deg apart (low by at most 1 - cos 0.5 deg,
+    # 4e-5; O(n) memory where the pairwise distances take O(n^2)); the box's diagonal
+    # said 349 mm for the QA's 300 x 180 oval and changed as the sketch turned
+    heads = n.radians(n.arange(180.0))
+    widths = xy @ n.vstack([n.cos(heads), n.sin(heads)])
+    size = float(n.max(widths.max(axis=0) - widths.min(axis=0)))
     d = n.diff(xy, axis=0)
     heading = n.arctan2(d[:, 1], d[:, 0])
     round_ = abs(math.degrees(float(n.sum(n.remainder(n.diff(heading) + math.pi, 2 * math.pi)
