@@ -89,12 +89,15 @@ QUIET_ROUNDS = 3      # event-loop round trips in a row with nothing pending
 def pending():
     """What the workbench has set going and not yet run, in words (None: nothing): the
     open panel's recompute (its timer: panelbase.DELAY_MS after an edit, TYPING_MS after a
-    typed key), a document still restoring or not yet finished opening (viewproviders'
+    typed key), its boxes' typing pause (NumberBox.pause: a text stands or is said refused
+    then), a document still restoring or not yet finished opening (viewproviders'
     finish_opening, polled every 50 ms while FreeCAD restores it), an answer_modal poll
     waiting for its dialog (_POLLS)."""
     from freecad.elastica import taskpanels as T, viewproviders as V
     if T.CURRENT and T.CURRENT[0].timer.isActive():
         return "the open panel's pending recompute"
+    if T.CURRENT and any(box.pause.isActive() for _, box in T.CURRENT[0].numbers):
+        return "the typing pause of a box of the open panel"
     if V._OPENING:
         return f"documents {sorted(V._OPENING)} still opening"
     restoring = [d.Name for d in App.listDocuments().values() if d.Restoring]

@@ -9,7 +9,12 @@
   cell's name typed as such says now how to bind it;
 - F3: '1/0' typed in Resample was "above the largest, 1000 m" (it is a division by zero),
   and the live preview had taken its prefix '1' (ResampleStep 6 -> 1 mm) while the box
-  showed the refused text: now the property stays at the box's last text that stood.
+  showed the refused text: now the property stays at the box's last text that stood;
+- QA gui F11: a refused text left in the box through the typing pause (no Tab, no Enter) had
+  set the feature to the value before the last text that stood ('4 mm' typed and left, then
+  'abc': Resample 0 mm, the fit redone; the blend's Length 300 typed, then '3O0': 149.8 mm,
+  the command's), with no error line: now the text typed last stands at the pause, the
+  feature keeps it and nothing recomputes, and the error line says why the text is refused.
 
 And '=' in an integer box (Degree) opens the editor on its property as FreeCAD's
 Gui::IntSpinBox does, bound to it with the same Cancel / OK / Undo (integer_editor).
@@ -17,11 +22,13 @@ Gui::IntSpinBox does, bound to it with the same Cancel / OK / Undo (integer_edit
 Screenshots: gui_typed_equals_editor.png (the editor '=' opened over Resample),
 gui_typed_division_by_zero.png (the Fit panel refusing '1/0'), gui_typed_bound.png (Resample
 bound to Sheet.step by it: 8 mm, read-only, marked), gui_typed_integer_editor.png and
-gui_typed_integer_bound.png (Degree bound to a cell)."""
+gui_typed_integer_bound.png (Degree bound to a cell), gui_typed_pause.png (the blend's Length
+'3O0' left through the typing pause: 300 mm kept, the error line saying why)."""
 import numpy as np
 
 import FreeCAD as App
 import FreeCADGui as Gui
+import Part
 from PySide import QtCore, QtGui
 
 import elastica_samples as S
@@ -123,6 +130,85 @@ def division_by_zero(doc, fit):
     G.wait()
     G.check(not T.CURRENT and fit.ResampleStep.Value == before,
             f"F3: Cancel restores Resample {before} mm ({fit.ResampleStep})")
+
+
+class _Recomputes:
+    """A document observer counting the recomputes of one feature (the panel's preview)."""
+
+    def __init__(self, obj):
+        self.name, self.count = obj.Name, 0
+
+    def slotRecomputedObject(self, obj):
+        if obj.Name == self.name:
+            self.count += 1
+
+
+def _paused_checks(panel, box, prop, label, stood, texts):
+    """Each refused text typed over ``stood`` and left through the typing pause: the feature
+    keeps ``stood``, nothing recomputes, the error line says why (as on Tab)."""
+    obj = panel.obj
+    watch = _Recomputes(obj)
+    App.addDocumentObserver(watch)
+    try:
+        for text in texts:
+            G.type_into(box, text)
+            G.wait()                   # the typing pause passes: no Tab, no Enter
+            line = G.error_line(panel)
+            value = getattr(obj, prop).Value
+            G.check(box.text() == text and value == stood and watch.count == 0
+                    and line.startswith(f"{label}: {text}"),
+                    f"F11: {text!r} left in {label} through the typing pause: the feature keeps "
+                    f"the {stood} mm typed last, no recompute, the error line says why "
+                    f"({value}, {watch.count} recomputes, {line!r})")
+    finally:
+        App.removeDocumentObserver(watch)
+
+
+def typing_pause(doc, fit):
+    """F11: a text typed and left through the typing pause stands; a refused one left after
+    it keeps it (the Fit's Resample, the blend's Length)."""
+    from freecad.elastica import taskpanels as T
+    panel = _panel(fit)
+    box = panel.step
+    G.type_into(box, "4 mm")
+    G.wait()
+    G.check(fit.ResampleStep.Value == 4.0 and G.error_line(panel) == "",
+            f"F11: '4 mm' typed and left through the typing pause is taken ({fit.ResampleStep})")
+    _paused_checks(panel, box, "ResampleStep", "Resample", 4.0,
+                   ("abc", "5 kg", "-2", "1/0", "3O0"))
+    G.type_into(box, "2 cm")
+    G.wait()
+    G.check(fit.ResampleStep.Value == 20.0 and G.error_line(panel) == "",
+            f"F11: '2 cm' typed over it is taken, the error line cleared ({fit.ResampleStep}, "
+            f"{G.error_line(panel)!r})")
+    panel.reject()
+    G.wait()
+    lk = doc.addObject("Sketcher::SketchObject", "PauseProfile")
+    lk.addGeometry(Part.LineSegment(App.Vector(1500, -900, 0), App.Vector(1620, -900, 0)), False)
+    lk.addGeometry(Part.LineSegment(App.Vector(1760, -850, 0), App.Vector(1860, -820, 0)), False)
+    doc.recompute()
+    G.open_panel(doc, "Elastica_Blend", [(lk, "Edge1"), (lk, "Edge2")], "a blend of two lines")
+    panel = T.CURRENT[0]
+    panel.mode.setCurrentIndex(0)       # Solve for a length
+    G.wait()
+    G.type_into(panel.length, "300")
+    G.wait()
+    b = panel.obj
+    G.check(b.Mode == "length" and b.Length.Value == 300.0,
+            f"F11: the blend's Length '300' typed and left stands ({b.Mode}, {b.Length})")
+    _paused_checks(panel, panel.length, "Length", "Length", 300.0, ("3O0", "abc", "5 kg", "-3"))
+    G.type_into(panel.length, "3O0")
+    G.wait()
+    G.screenshot("gui_typed_pause.png")
+    G.check(not panel.accept() and T.CURRENT and b.Length.Value == 300.0,
+            f"F11: OK refuses '3O0', the panel stays open, Length 300 mm ({b.Length})")
+    name = b.Name
+    panel.reject()
+    G.wait()
+    G.check(not T.CURRENT and doc.getObject(name) is None,
+            "F11: Cancel closes the blend's panel, the new blend removed")
+    doc.removeObject(lk.Name)
+    doc.recompute()
 
 
 def equals_opens_the_editor(doc, fit):
@@ -341,6 +427,7 @@ def run_all(smoke):
     fit.ResampleStep = 6.0
     doc.recompute()
     division_by_zero(doc, fit)
+    typing_pause(doc, fit)
     equals_opens_the_editor(doc, fit)
     integer_editor(doc, fit)
     stiffness_editor(doc, dots)

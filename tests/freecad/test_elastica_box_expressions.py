@@ -8,6 +8,9 @@ under xvfb in gui_typed_expressions.py):
   as inf), '0/0' too, 'log(0)' and '1e400' not finite numbers;
 - a refused text keeps ``settled``, the value of the box's last text that stood, which the
   panel puts back on the feature (Qt's value is that of the text's last good prefix);
+- a text the box takes stands when the typing pauses (TYPING_MS, no Enter or Tab), and the
+  box says so (``paused``: the panel's error line says a refused one then): '4 mm' typed
+  and left, then 'abc' put back the value before '4 mm' (QA gui F11);
 - a cell's name typed as a value says how a field is bound to it."""
 import os
 import unittest
@@ -17,7 +20,7 @@ import FreeCAD as App
 os.environ.setdefault("QT_QPA_PLATFORM", "offscreen")      # freecadcmd: no display
 from PySide import QtCore, QtGui  # noqa: E402
 
-from freecad.elastica.spinboxes import NumberBox  # noqa: E402
+from freecad.elastica.spinboxes import TYPING_MS, NumberBox  # noqa: E402
 
 STANDARD = 0
 APP = QtGui.QApplication.instance() or QtGui.QApplication([])
@@ -28,6 +31,13 @@ def _type(box, text):
     for ch in text:
         for kind in (QtCore.QEvent.KeyPress, QtCore.QEvent.KeyRelease):
             QtGui.QApplication.sendEvent(box, QtGui.QKeyEvent(kind, 0, QtCore.Qt.NoModifier, ch))
+
+
+def _pause(box):
+    """The user stops typing: the event loop runs past the box's typing pause."""
+    loop = QtCore.QEventLoop()
+    QtCore.QTimer.singleShot(2 * TYPING_MS, loop.quit)   # after the box's pause timer
+    loop.exec_()
 
 
 class BoxExpressionsTest(unittest.TestCase):
@@ -58,6 +68,26 @@ class BoxExpressionsTest(unittest.TestCase):
         self.assertEqual(self.box.settled, 8.0)
         _type(self.box, "3 deg")
         self.assertEqual(self.box.settled, 8.0)
+
+    def test_a_text_left_through_the_typing_pause_stands(self):
+        paused = []
+        self.box.paused.connect(lambda: paused.append((self.box.text(), self.box.settled)))
+        _type(self.box, "4 mm")
+        self.assertEqual(self.box.settled, 6.0)       # typing: not yet
+        _pause(self.box)
+        self.assertEqual(paused, [("4 mm", 4.0)])     # stood: what the panel puts back
+        for text in ("abc", "5 kg", "-2", "1/0", "3O0"):
+            _type(self.box, text)
+            _pause(self.box)
+            self.assertEqual(paused[-1], (text, 4.0))   # refused: the panel says why
+        self.assertEqual(len(paused), 6)
+        _type(self.box, "2 cm")
+        _pause(self.box)
+        self.assertEqual(paused[-1], ("2 cm", 20.0))
+        _type(self.box, "12")                         # a prefix typed on, never left: it
+        _type(self.box, "12 kg")                      # does not stand
+        _pause(self.box)
+        self.assertEqual(paused[-1], ("12 kg", 20.0))
 
     def test_equals_opens_the_expression_editor_and_is_not_typed(self):
         opened = []

@@ -20,15 +20,11 @@ from .panelwatch import Watch
 from .proxy import (EDGE_ENDS, InputProblem, abort_transaction, note_changes, note_values,
                     save_note, saved_note, said as proxy_said)
 from .recording import edit_lines, edit_state
-from .spinboxes import BAD_RGB, DecadeBox, IntBox, NumberBox
+from .spinboxes import BAD_RGB, TYPING_MS, DecadeBox, IntBox, NumberBox
 from .units import length_text, number_text, say, unit_names
 
 CURRENT = []        # the open panel, if any (scripts and the GUI smoke test drive it)
 DELAY_MS = 150      # recompute after this pause in editing (arrows, wheel, choices)
-# and after this one in typing: a person types a key in about 250 ms, and every prefix of a
-# number was solved ('1', '15', '150'); leaving the box solves at once, and Enter too before
-# FreeCAD's task view takes it as OK (its default button), as in its own panels
-TYPING_MS = 600
 WARNING_RGB = "#b36200"   # the amber of FreeCAD's report-view warnings, dark enough to read
 ERROR_RGB = BAD_RGB
 
@@ -89,6 +85,7 @@ class Panel(ExpressionFields):
     def __init__(self, obj, created=True, note=""):
         self.obj = obj
         self.opened_with = edit_state(obj)      # OK records what the edit changed
+        self.previewed = self.opened_with       # what the feature shows was solved from
         # why the command chose what it did (warning line): given by the command, or saved
         # with the feature while its values hold (proxy.save_note)
         self._note, self._note_for = note or saved_note(obj), note_values(obj)
@@ -259,12 +256,14 @@ class Panel(ExpressionFields):
     def watch_text(self, label, box):
         """A number box whose text the panel checks: a text it cannot take ('3 deg' in a
         length box) is marked in the box as typed (NumberBox.problem) and kept past focus-out;
-        Enter, leaving the box and OK say it on the error line, naming the field, and OK
-        refuses it (Qt kept the value of its last good prefix, 3 mm, and OK took it)."""
+        Enter, leaving the box, the typing pause (NumberBox.paused) and OK say it on the error
+        line, naming the field, and OK refuses it (Qt kept the value of its last good prefix,
+        3 mm, and OK took it)."""
         box.keep_bad_text = True
         self.numbers.append((label, box))
         box.lineEdit().textChanged.connect(lambda _t: self._input_said and self.say_bad_input())
         box.editingFinished.connect(self.say_bad_input)
+        box.paused.connect(self.say_bad_input)
 
     def bad_input(self):
         """'Field: why' for the first field that applies whose text it cannot take, or ''."""
@@ -481,6 +480,7 @@ class Panel(ExpressionFields):
                 self.doc.recompute()
         except Exception as exc:  # never let a preview escape
             App.Console.PrintError(f"Elastica: {exc}\n")
+        self.previewed = edit_state(o)      # (panelexpressions.hold_back)
         self.refresh()
         self.refit()
 

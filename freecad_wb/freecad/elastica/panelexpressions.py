@@ -10,6 +10,7 @@ import FreeCADGui as Gui
 from PySide import QtCore, QtGui
 
 from .proxy import bound_expression
+from .recording import edit_state
 from .spinboxes import PARSED_UNIT
 
 
@@ -37,13 +38,17 @@ class ExpressionFields:
         sent on its last good prefix ('1' of '1/0': ResampleStep 6 -> 1 mm, previewed)
         while the box showed the refused text (QA25gui F3). A text it takes again sets its
         value: Qt says nothing when it is the value before ('7 in' after '7 i' put 151 mm
-        back: its '7' had set 177.8 mm already)."""
+        back: its '7' had set 177.8 mm already). Put back, the feature's values are those its
+        preview shows (Panel.previewed): the recompute the prefix set going is dropped ('5'
+        of '5 kg' over 4 mm: the fit was redone at 4 mm, QA gui F11)."""
         if box.isReadOnly():
             return
         if not box.problem():
             self.set(prop, box.value())         # a float, an integer box's int
         elif box.settled is not None:
             self.set(prop, float(box.settled))
+            if self.timer.isActive() and edit_state(self.obj) == self.previewed:
+                self.timer.stop()
 
     def edit_expression(self, box, prop):
         """FreeCAD's expression editor (Gui::Dialog::DlgExpressionInput) on ``prop``, as the

@@ -7,12 +7,17 @@ from __future__ import annotations
 import math
 
 import FreeCAD as App
-from PySide import QtGui
+from PySide import QtCore, QtGui
 
 from .units import (box_text, decimals, feet_inches, length_unit, number_text, tension_unit,
                     user_length)
 
 BAD_RGB = "#b00"                         # panelbase.ERROR_RGB: the error line's red
+# A typed text stands after this pause in typing (NumberBox.paused; the panels recompute then,
+# panelbase.Panel.typed_in): a person types a key in about 250 ms, and every prefix of a
+# number was solved ('1', '15', '150'); leaving the box solves at once, and Enter too before
+# FreeCAD's task view takes it as OK (its default button), as in its own panels
+TYPING_MS = 600
 
 
 # a box's unit as FreeCAD's unit parser writes it (App.Units.Quantity)
@@ -117,6 +122,9 @@ class NumberBox(Bindable, QtGui.QDoubleSpinBox):
     text, not a suffix: a suffix stayed behind what was typed ('7 in mm')."""
 
     unit = ""                            # Qt calls validate() while __init__ runs
+    # the typing paused (TYPING_MS after the last key): the text stood (``settled``) or is
+    # refused, which the panel's error line says then (panelbase.Panel.watch_text)
+    paused = QtCore.Signal()
     written = None                       # (factor, unit) of the text the box last wrote
 
     def __init__(self, lo, hi, step, unit="", tip=""):
@@ -133,6 +141,11 @@ class NumberBox(Bindable, QtGui.QDoubleSpinBox):
         self._palette = QtGui.QPalette(self.lineEdit().palette())
         self.lineEdit().textChanged.connect(self._mark_input)
         self.editingFinished.connect(self._settle)
+        self.pause = QtCore.QTimer(self)
+        self.pause.setSingleShot(True)
+        self.pause.setInterval(TYPING_MS)
+        self.pause.timeout.connect(self._paused)
+        self.lineEdit().textEdited.connect(lambda _text: self.pause.start())
 
     def shown(self, value):
         """(factor, unit): the box shows ``value`` as value / factor unit."""
@@ -173,9 +186,10 @@ class NumberBox(Bindable, QtGui.QDoubleSpinBox):
         self._wrote()
 
     # The value of the box's last text that stood (written by the box, or typed and taken
-    # by Enter or focus-out): a text it refuses never reaches the feature, the panel sets
-    # this one back (panelexpressions.ExpressionFields.hold_back), not the value of the
-    # refused text's last good prefix ('1' of '1/0', which Qt's keyboard tracking sent on).
+    # by Enter, focus-out or the typing pause): a text it refuses never reaches the feature,
+    # the panel sets this one back (panelexpressions.ExpressionFields.hold_back), not the
+    # value of the refused text's last good prefix ('1' of '1/0', which Qt's keyboard
+    # tracking sent on).
     settled = None
 
     _refused = ""                        # the refused text focus-out puts back (focusOutEvent)
@@ -183,6 +197,13 @@ class NumberBox(Bindable, QtGui.QDoubleSpinBox):
     def _settle(self):
         if not self.problem() and not self._refused:
             self.settled = self.value()
+
+    def _paused(self):
+        """The typing paused: a text the box takes stands, as on Enter (the panel previewed
+        it); the settled value stayed the one before it ('4 mm' typed and left there, then
+        'abc': the panel put 0 mm back, the value before '4 mm', QA gui F11)."""
+        self._settle()
+        self.paused.emit()
 
     def focusInEvent(self, event):
         super().focusInEvent(event)
