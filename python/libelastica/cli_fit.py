@@ -123,6 +123,10 @@ def _print_uncertainty(rec: Dict[str, Any]) -> None:
     vals = dict(rec["curve"], **u["values"])
     shown = [k for k in ("mu", "k", "z", "h", "length", "energy", "force_x", "force_y",
                          "start_curvature", "end_curvature") if k in u["stderr"] and k in vals]
+    if u["dof"] <= 0:     # (QA F9: '+- inf' each, then 'standard errors NaN': one thing, said once)
+        print("std errors  none: " + "; ".join(n.rpartition(": ")[0] for n in u["note"].split("; ")
+                                              if n.startswith("no degrees of freedom")))
+        return
     print("std errors  " + ", ".join(f"{k}={_fmt(vals[k])} +- " + ("inf" if u["stderr"][k] is None
                                      else f"{u['stderr'][k]:.2g}") for k in shown))
     if u["undetermined"]:

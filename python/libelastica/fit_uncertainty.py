@@ -423,7 +423,10 @@ def fit_uncertainty(r, fixed: Optional[Mapping[str, float]] = None) -> FitUncert
         s2 = rss / dof
     else:
         s2 = math.nan
-        note.append(f"no degrees of freedom left ({N} residuals, {rank} parameters): standard errors NaN")
+        npts = len(r.points)
+        why = (f"{npts} points give {N} residuals" + (", the end points 2 each," if N == npts + 2
+                                                     else "") + f" for {rank} parameters")
+        note.append(f"no degrees of freedom left ({why}): no standard errors (NaN)")
     if trim.any() and Z.shape[1]:
         # the trimming conditions hold the end points' feet at the curve's ends: their
         # tangential noise (variance s^2, as across) moves the solution by the constrained

@@ -309,6 +309,12 @@ def fit_keyline(points, r: Optional[float] = None, model: str = "discrete", side
                               "no inflection a keyline "
                               "can split at (noise near an end of points that turn one way?); fit them as one curve")
     except DomainError:
+        from .misfit import _nearly_closed
+        from .prep import _no_inflection_reason
+        xy = prep.frame.project(pts) if prep.frame is not None else pts[:, :2]
+        if _nearly_closed(xy) is not None:   # (QA F1: its resampled polygon is no outline's)
+            raise DomainError(lib.EL_EDOM, "fit_keyline: no inflection found: "
+                              + _no_inflection_reason(xy)) from None
         if unordered.order is None:
             raise
         # resampled in an order that is no curve's, the polygon's turns are the shuffle's:

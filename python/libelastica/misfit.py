@@ -474,8 +474,10 @@ def misfit_summary(m: Misfit, points=None, unit: str = "", numbered: bool = True
         closed = None if points is None else _nearly_closed(np.asarray(points, dtype=float))
         if closed is not None:     # (QA24 F1: a letter 'o' of pixels, 97 % of an ellipse)
             return (said + f": their ends lie {fmt(closed[0], 3)} apart, {closed[1]:.0%} of "
-                    "their extent, a nearly closed shape, which no one elastica follows: split "
-                    "it into pieces (a keyline, fit_keyline, or more) and fit each alone")
+                    "their extent, a nearly closed shape, which no one elastica follows, nor "
+                    "one keyline (fit_keyline takes an open piece with one inflection): cut "
+                    "it into open pieces (points[i:j]) that turn one way (fit) or hold one "
+                    "inflection each (fit_keyline) and fit each alone")
         return said + " (a corner, or curves of more than one piece: fit each alone)"
     place = "" if points is None else _places(np.asarray(points, dtype=float), [m.corner], fmt)[0]
     where = (f"at point {m.corner} (counted from 0{'; at ' + place if place else ''})"

@@ -274,9 +274,47 @@ def find_inflection_info(xy, side: int = 0) -> Inflection:
     pts = as_points(xy, "find_inflection: xy", 2, min_rows=4)
     side = as_int(side, "find_inflection: side", -1, 1)
     info = ffi.new("el_inflection *")
-    check(lib.el_find_inflection(dptr(pts), pts.shape[0], int(side), info), "find_inflection")
+    try:
+        check(lib.el_find_inflection(dptr(pts), pts.shape[0], int(side), info), "find_inflection")
+    except DomainError:
+        raise DomainError(lib.EL_EDOM, "find_inflection: no inflection found: "
+                          + _no_inflection_reason(pts)) from None
     return Inflection(index=int(info.index), neighbor=int(info.neighbor), apex=int(info.apex),
                       end=int(info.end), iterations=int(info.iterations))
+
+
+def _no_inflection_reason(xy) -> str:
+    """Why the points ``xy`` (n, 2) in their order give no one inflection a keyline splits
+    at, in words a user can act on (the refusals of :func:`find_inflection` and
+    :func:`fit_keyline`): a closed outline (its ends meet: QA F1, a tile section turning
+    both ways 4 times was told it 'turns one way'), points on a line, points that turn one
+    way, or a turning that changes sign more than once (several inflections: noise, or
+    more pieces), each with what to do."""
+    from .misfit import _nearly_closed
+    p = np.asarray(xy, dtype=float)
+    e = np.diff(p, axis=0)
+    e = e[np.hypot(*e.T) > 0]
+    cross = e[:-1, 0] * e[1:, 1] - e[:-1, 1] * e[1:, 0]
+    size = float(np.max(np.ptp(p, axis=0))) if len(p) else 0.0
+    turn = np.sign(cross[np.abs(cross) > 1e-12 * size * size]) if size > 0 else cross[:0]
+    changes = int(np.count_nonzero(np.diff(turn))) if len(turn) else 0
+    closed = _nearly_closed(p) if size > 0 else None
+    pieces = ("cut it into open pieces with one inflection each (e.g. points[i:j], in curve "
+              "order) and fit each with el.fit_keyline, or pieces that turn one way with el.fit")
+    if closed is not None:
+        return (f"the points form a closed outline (their ends lie {closed[0]:.3g} apart, "
+                f"{closed[1]:.0%} of their extent; their polyline's turning changes sign "
+                f"{changes} times), which has no one inflection to split at: {pieces}")
+    if len(turn) == 0:
+        return "the points lie on a line (no turning): fit them as one curve (el.fit)"
+    if changes == 0:
+        return ("the points turn one way (their polyline turns "
+                f"{'left' if turn[0] > 0 else 'right'} at every vertex): a keyline splits at "
+                "its inflection; fit them as one curve (el.fit)")
+    return (f"their polyline's turning changes sign {changes} times, but neither side of its "
+            "farthest point from the chord shows an inflection beyond that point's neighbours "
+            "(an inflection at an end, or noise?): fit them as one curve (el.fit); where they "
+            f"hold several inflections, {pieces}")
 
 
 def find_inflection(xy, side: int = 0) -> int:
@@ -321,8 +359,8 @@ class PreparedKeyline(ValueEquality):
         (inflection -> first vertex, inflection -> last vertex). Raises
         DomainError when there is no inflection."""
         if self.inflection is None:
-            raise DomainError(lib.EL_EDOM, "prepare_keyline: no inflection found: the points turn "
-                              "one way (a keyline splits at its inflection; fit them as one curve)")
+            raise DomainError(lib.EL_EDOM, "prepare_keyline: no inflection found: "
+                              + _no_inflection_reason(self.polygon))
         i = self.inflection
         return self.polygon[i::-1].copy(), self.polygon[i:].copy()
 

@@ -1,0 +1,70 @@
+"""What the library says to a Python user with measured curves (QA qapy's findings F1, F9):
+refusals that say why and advice that can be followed."""
+from __future__ import annotations
+
+import warnings
+
+import numpy as np
+import pytest
+
+import libelastica as el
+from cli_run import cli
+
+
+def _outline():
+    """QA F1's closed tile section, 150 x 20, its turning changing sign 4 times."""
+    a = np.linspace(0, 2 * np.pi, 120, endpoint=False)
+    o = np.c_[150 * np.cos(a), 20 * np.sin(a) + 10 * np.sin(2 * a)]
+    return np.r_[o, o[:1]]
+
+
+def test_a_closed_outline_is_refused_as_closed_not_as_turning_one_way():
+    """fit_keyline said 'no inflection found: the points turn one way' of an outline that turns
+    both ways 4 times, find_inflection the bare 'input outside the domain the method covers'."""
+    o = _outline()
+    for call in (lambda: el.fit_keyline(o, model="smooth"), lambda: el.fit_keyline(o),
+                 lambda: el.find_inflection(o)):
+        with pytest.raises(el.DomainError) as exc:
+            call()
+        said = str(exc.value)
+        assert "closed outline" in said and "changes sign 4 times" in said, said
+        assert "turn one way (" not in said and "outside the domain" not in said
+        assert "open pieces with one inflection each" in said and "points[i:j]" in said
+
+
+def test_the_closed_misfit_advice_does_not_send_the_user_to_fit_keyline_whole():
+    o = _outline()
+    with warnings.catch_warnings(record=True) as w:
+        warnings.simplefilter("always")
+        el.fit(o, model="smooth")
+    said = [str(x.message) for x in w if issubclass(x.category, el.MisfitWarning)]
+    assert said and "nearly closed" in said[0]
+    assert "(a keyline, fit_keyline, or more)" not in said[0]
+    assert "open pieces (points[i:j])" in said[0] and "one inflection each (fit_keyline)" in said[0]
+    # and the advice works: an open piece with one inflection fits as a keyline
+    assert el.fit_keyline(o[10:60], model="smooth").input_rms < 0.1
+
+
+def test_open_refusals_stay_true():
+    a = np.linspace(0, 2, 100)
+    with pytest.raises(el.DomainError, match="no inflection found: the points turn one way"):
+        el.find_inflection(np.c_[np.cos(a), np.sin(a)])
+    with pytest.raises(el.DomainError, match="on a line"):
+        el.find_inflection(np.c_[a, 2 * a])
+
+
+def test_no_degrees_of_freedom_is_said_once_and_true(tmp_path, capsys):
+    """5 points, discrete: 'std errors k=0.89 +- inf, ...' then 'no degrees of freedom left (7
+    residuals, 7 parameters): standard errors NaN' (QA F9): inf and NaN for one thing."""
+    f = tmp_path / "five.csv"
+    f.write_text("x,y\n0,0\n1,1\n2,3\n3,3\n4,5\n")
+    code, out, _ = cli(capsys, "fit", f)
+    assert code == 0
+    lines = [s for s in out.splitlines() if "std errors" in s or "degrees of freedom" in s]
+    assert lines == ["std errors  none: no degrees of freedom left (5 points give 7 residuals, "
+                     "the end points 2 each, for 7 parameters)"], out
+    assert "+- inf" not in out
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        u = el.fit(np.loadtxt(f, delimiter=",", skiprows=1)).uncertainty()
+    assert u.dof == 0 and "5 points give 7 residuals" in u.note
