@@ -38,7 +38,10 @@ def test_end_tangent_line_gives_the_source_ends_and_the_inflection_its_own(capsy
     assert doc["pieces"] == 2
     # the case QA25 met: the inflection's error is the larger, the all-ends figure is it
     assert infl_deg > 1.5 * ends_deg
-    assert np.isclose(np.degrees(doc["end_tangent_error_rad"]), max(ends_deg, infl_deg))
+    assert np.isclose(np.degrees(doc["piece_end_tangent_error_rad"]), max(ends_deg, infl_deg))
+    # the key named 'end' holds the ends' (QA qapy F5: it held the inflection's, 0.0213 deg
+    # where the ends were 8e-13 deg off)
+    assert doc["end_tangent_error_rad"] == doc["source_end_tangent_error_rad"]
     said_ends = _figure(out, "end tangents off the source's")
     said_infl = _figure(out, "tangents at the inflections (where the pieces meet) off the source's")
     assert said_ends == float(f"{ends_deg:.3g}")
