@@ -68,3 +68,41 @@ def test_no_degrees_of_freedom_is_said_once_and_true(tmp_path, capsys):
         warnings.simplefilter("ignore")
         u = el.fit(np.loadtxt(f, delimiter=",", skiprows=1)).uncertainty()
     assert u.dof == 0 and "5 points give 7 residuals" in u.note
+
+
+# QA F2's ship line: 30 uneven points along a 9000 mm elastica, noise 1.5 mm, 0.1 mm rounding
+SHIP = np.array([(11997.6, 3503.2), (12128.7, 3635.7), (12133.3, 3637.3), (12235.5, 3755.6),
+                 (12311.4, 3842.9), (12391.3, 3950.3), (12738.9, 4483.7), (12783.2, 4565.9),
+                 (13798.2, 6354.7), (13829.1, 6392.4), (13990.4, 6596.3), (14229.9, 6837.3),
+                 (14475.1, 7042.5), (14484.6, 7052.3), (14687.6, 7187.2), (14739.4, 7216.8),
+                 (15184.4, 7413.6), (15474.8, 7482.0), (15588.4, 7500.2), (15783.0, 7517.4),
+                 (16088.0, 7512.1), (16144.4, 7502.0), (17082.6, 7179.7), (17089.8, 7178.5),
+                 (17678.9, 6722.6), (17815.2, 6580.1), (17973.6, 6405.1), (18114.0, 6229.0),
+                 (18326.2, 5935.7), (18380.9, 5858.2)])
+
+
+@pytest.mark.parametrize("n", [24, 30])
+def test_a_sparse_ship_line_says_the_smooth_model_fits_it_better(n):
+    """The default (discrete) fit's exported cubic lay 2.50 / 5.18 mm (rms / max) from the 30
+    points, the smooth curve 1.49 / 2.35, and no SparseWarning fired (a ratio of 1.7-1.8, the
+    rule asked 2, and 30 points were above SPARSE_POINTS = 25)."""
+    pts = SHIP[:n]
+    with warnings.catch_warnings(record=True) as w:
+        warnings.simplefilter("always")
+        r = el.fit(pts)
+    said = [str(x.message) for x in w if issubclass(x.category, el.SparseWarning)]
+    assert len(said) == 1 and "use model='smooth'" in said[0], [str(x.message) for x in w]
+    smooth = el.fit(pts, model="smooth")
+    assert r.sparse == pytest.approx(smooth.rms)
+    cubic = np.sqrt(np.mean(r.cubic_distances()[1] ** 2))
+    from libelastica.cubic import SPARSE_RATIO
+    assert cubic > SPARSE_RATIO * smooth.rms
+
+
+def test_a_dense_discrete_fit_asks_for_no_smooth_fit():
+    """At and above SPARSE_POINTS no smooth fit is run: a clean discrete curve of that many
+    vertices fits itself, without a word."""
+    d = el.DiscreteElastica(x0=0, y0=0, h=1.0, phi=0.2, z=0.05, q=0.3, k=0.8, n=el.SPARSE_POINTS)
+    with warnings.catch_warnings():
+        warnings.simplefilter("error", el.SparseWarning)
+        assert el.fit(d.points()).sparse is None
