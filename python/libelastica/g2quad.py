@@ -17,6 +17,7 @@ from ._ffi import DomainError, as_points, as_size, lib
 from ._values import ValueEquality
 from .affine import (AffinePolyline, EdgeCountError, EndPieces, _curve_samples, _is_curve,
                      affine_end_pieces, affine_polyline, elastica_inflections, g2_bspline, quadratic_joint_curvatures)
+from .g2dev import refined_deviation
 from .g2quad_points import (_built_locally, _end_curvatures, _local_source, _noisy_points_error,
                             _repeated_points, _seam_duck)
 from .g2ends import (_end_curvature, _matched_ends, _menger_max, _rel_err, _seam_estimate,
@@ -33,9 +34,10 @@ class G2Quadratic(ValueEquality):
     bsplines: one curvature-continuous quadratic B-spline per inflection-free piece,
     piece p running exactly from ends[p] to ends[p+1] (the source's ends and its
     inflection points); polyline: the affine arc-length polyline (seed 002 §4) they
-    come from; deviation: the largest distance of the splines from the source (its
-    sample polyline); curvature_jump: the largest relative curvature jump at any
-    joint inside a piece (0 up to rounding: G2); end_tangent_error: the largest angle
+    come from; deviation: the largest distance of the splines from the source: a curve's
+    true distance (its foot on the curve), points' to their polyline, its sampled maximum
+    refined by golden section (g2dev.refined_deviation: a maximum, not a bound);
+    curvature_jump: the largest relative curvature jump at any joint inside a piece (0 up to rounding: G2); end_tangent_error: the largest angle
     (radians) between a piece's end tangent and the source's there (None when the
     source's tangents are unknown; O(edge) at the inflections, where a quadratic end
     segment that meets its joint G2 has no freedom left for the tangent);
@@ -688,6 +690,8 @@ def g2_quadratic(curve_or_points, n: int, samples_per_vertex: int = 20, tangents
         seam = (seam_a, seam_k / kref)
         seam_bound = tuple(max(SEAM_G2, r) for r in _seam_rounding(splines[0], splines[-1], kref))
     ap = dataclasses.replace(ap, points=poly)
+    if splines and not _plain:   # the stated figure: refined (g2dev.py; the choices above sampled)
+        dev = refined_deviation(splines, samples, c if is_curve else None)
     g = G2Quadratic(splines, ap, np.asarray(ends), dev, jump,
                     terr if ends_dir is not None else None, bool(all(covers)),
                     ends_covered=(bool(covers[0]), bool(covers[1])), join_angle=angle,
