@@ -37,8 +37,8 @@ class G2Quadratic(ValueEquality):
     come from; deviation: the largest distance of the splines from the source: a curve's
     true distance (its foot on the curve), points' to their polyline, its sampled maximum
     refined by golden section (g2dev.refined_deviation: a maximum, not a bound);
-    curvature_jump: the largest relative curvature jump at any joint inside a piece (0 up to rounding: G2); end_tangent_error: the largest angle
-    (radians) between a piece's end tangent and the source's there (None when the
+    curvature_jump: the largest relative curvature jump at any joint inside a piece (0 up
+    to rounding: G2); end_tangent_error: the largest angle (radians) between a piece's end tangent and the source's there (None when the
     source's tangents are unknown; O(edge) at the inflections, where a quadratic end
     segment that meets its joint G2 has no freedom left for the tangent);
     source_end_tangent_error: the same (radians) at the source's own ends that the splines reach
