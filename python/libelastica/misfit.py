@@ -53,6 +53,13 @@ CORNER_WINDOW = 25
 CORNER_CANDIDATES = 3
 CORNER_MIN_SIDE = 10
 CORNER_SAMPLES = 2000
+# Where no corner stands out, the farthest STRAY_MOST points (1, then 2, ...) are left out and
+# the others fitted again (smooth): where they then fit within MISFIT_RATIO x the noise,
+# those points account for the misfit and are named (points dragged off among many, under
+# far_points' threshold); else the farthest is named as NOT the cause (QA qagui F7: 40 points
+# of a sine-like S, point 17 moved 9 mm: rms 2.76, 2.51 without it, 10.3 x the noise either
+# way; said "a corner, or curves of more than one piece" of a shape with no corner).
+STRAY_MOST = 3
 
 
 class MisfitWarning(RuntimeWarning):
@@ -66,12 +73,25 @@ class Misfit(ValueEquality):
     """:func:`misfit`'s verdict: ``rms``, the fit's;
     ``noise``, the points' noise level (:func:`noise_level`); ``ratio`` = rms / noise;
     ``corner``: the index of the likely corner, -1 where none stands out; ``parts``: the rms
-    of the two parts split there (smooth fits), else None."""
+    of the two parts split there (smooth fits), else None; where no corner stands out
+    (``corner`` -1), ``strays``: the farthest points left out (indices, farthest first; those
+    that account for the misfit where leaving them out lets the others fit within
+    MISFIT_RATIO x the noise, else the farthest alone), ``stray_distances``: theirs to the
+    curve, ``without``: the rms of the others' smooth fit (None: not tried)."""
     rms: float
     noise: float
     ratio: float
     corner: int = -1
     parts: Optional[Tuple[float, float]] = None
+    strays: Tuple[int, ...] = ()
+    stray_distances: Tuple[float, ...] = ()
+    without: Optional[float] = None
+
+    @property
+    def strays_account(self) -> bool:
+        """Whether the points ``strays`` account for the misfit: without them the others fit
+        within MISFIT_RATIO x the noise."""
+        return self.without is not None and self.without <= MISFIT_RATIO * self.noise
 
 
 def noise_level(points) -> float:
@@ -418,7 +438,31 @@ def _verdict(fig: _Figures, d: np.ndarray, rms_all: float, corner: bool = True) 
     if not (rms > MISFIT_RATIO * noise and rms > MISFIT_FLOOR * extent):
         return None
     at, parts = _corner(pts, noise) if corner else (-1, None)
-    return Misfit(rms, noise, rms / noise if noise > 0 else np.inf, at, parts)
+    strays = _strays(pts, d, noise) if corner and at < 0 else ((), None)
+    return Misfit(rms, noise, rms / noise if noise > 0 else np.inf, at, parts, strays[0],
+                  tuple(float(abs(d[i])) for i in strays[0]), strays[1])
+
+
+def _strays(pts: np.ndarray, d: np.ndarray, noise: float):
+    """(the farthest points that account for the misfit, the others' rms) where leaving out
+    the farthest 1 .. STRAY_MOST points lets the others' smooth fit lie within MISFIT_RATIO x
+    ``noise``; else ((the farthest,), the others' rms without it); ((), None) where no fit
+    of the others is made (a failed fit)."""
+    from .fit import judging_fit
+    order = [int(i) for i in np.argsort(-np.abs(d), kind="stable")[:STRAY_MOST]]
+    first = None
+    for k in range(1, len(order) + 1):
+        if len(pts) - k < MISFIT_MIN_POINTS:
+            break
+        try:
+            r = judging_fit(np.delete(pts, order[:k], axis=0), model="smooth")
+        except (ValueError, ArithmeticError, RuntimeError):
+            break
+        rms = float(np.sqrt(np.mean(np.asarray(r.distances, dtype=float) ** 2)))
+        if rms <= MISFIT_RATIO * noise:
+            return tuple(order[:k]), rms
+        first = first or (tuple(order[:1]), rms)
+    return first or ((), None)
 
 
 def _places(points: np.ndarray, rows, fmt: LengthFormat) -> list:
@@ -456,8 +500,37 @@ def _nearly_closed(points: np.ndarray):
     return (gap, gap / extent) if area >= CLOSED_AREA * extent * extent else None
 
 
+def _point_named(i: int, points, fmt: LengthFormat, numbered: bool, named) -> str:
+    """How misfit_summary names point i: named(i) where given, else "point 7 (counted from
+    0; at (x, y))", or "(x, y)" alone where not ``numbered``."""
+    if named is not None:
+        return named(i)
+    place = "" if points is None else _places(np.asarray(points, dtype=float), [i], fmt)[0]
+    return (f"point {i} (counted from 0{'; at ' + place if place else ''})"
+            if numbered or not place else place)
+
+
+def _strays_said(m: Misfit, points, fmt: LengthFormat, numbered: bool, named) -> str:
+    """misfit_summary's words where no corner stands out: the farthest points named, as the
+    cause where they account for the misfit (Misfit.strays_account), else as not the cause;
+    a corner never named (none stands out)."""
+    names = [_point_named(i, points, fmt, numbered, named) for i in m.strays]
+    far = ", ".join(f"{n}, {fmt(v, 3)} from the curve" for n, v in zip(names, m.stray_distances))
+    if m.strays_account:
+        one = len(m.strays) == 1
+        return (f": the farthest {'point' if one else f'{len(m.strays)} points'} account"
+                f"{'s' if one else ''} for it ({far}): without {'it' if one else 'them'} the "
+                f"others fit at rms {fmt(m.without, 3)}. Dragged off? Remove or move "
+                f"{'it' if one else 'them'} to fit the rest")
+    why = (f", and the farthest point is not the cause ({far}; without it rms "
+           f"{fmt(m.without, 3)})" if m.strays else "")
+    return (f": no corner stands out{why}; a shape no one elastica takes, or curves of more "
+            "than one piece: fit each alone, or pass an elastic spline through the points")
+
+
 def misfit_summary(m: Misfit, points=None, unit: str = "", numbered: bool = True,
-                   length: Optional[LengthFormat] = None, what: str = "one elastica") -> str:
+                   length: Optional[LengthFormat] = None, what: str = "one elastica",
+                   named=None) -> str:
     """What a warning of points that are not one elastica says (:func:`fit`'s, the CLI's and
     FreeCAD's), of :func:`misfit`'s verdict ``m``: "the curve lies 10.9 from the points
     (rms), 24 x their own noise (0.456): they are not one elastica; a corner at point 162
@@ -466,7 +539,10 @@ def misfit_summary(m: Misfit, points=None, unit: str = "", numbered: bool = True
     the corner's place (4 digits of their size however far from the origin: the CLI's
     coordinates); ``unit``, ``length`` as
     :func:`wander_summary`'s; numbered False: by its place alone, where the numbers are the
-    fit's order, not the user's; what: the model ("one keyline" for :func:`fit_keyline`'s)."""
+    fit's order, not the user's; what: the model ("one keyline" for :func:`fit_keyline`'s);
+    named: a function of a point's index giving how it is named instead (FreeCAD's "point 24
+    as given, at (x, y) mm in the sketch"). Where no corner stands out, the farthest points
+    (``m.strays``) are named: as the cause where they account for the misfit, else as not."""
     fmt = lengths(unit, length)
     said = (f"the curve lies {fmt(m.rms, 3)} from the points (rms), {m.ratio:.3g} x their own "
             f"noise ({fmt(m.noise, 3)}): they are not {what}")
@@ -478,10 +554,8 @@ def misfit_summary(m: Misfit, points=None, unit: str = "", numbered: bool = True
                     "one keyline (fit_keyline takes an open piece with one inflection): cut "
                     "it into open pieces (points[i:j]) that turn one way (fit) or hold one "
                     "inflection each (fit_keyline) and fit each alone")
-        return said + " (a corner, or curves of more than one piece: fit each alone)"
-    place = "" if points is None else _places(np.asarray(points, dtype=float), [m.corner], fmt)[0]
-    where = (f"at point {m.corner} (counted from 0{'; at ' + place if place else ''})"
-             if numbered or not place else f"at {place}")
+        return said + _strays_said(m, points, fmt, numbered, named)
+    where = "at " + _point_named(m.corner, points, fmt, numbered, named)
     return (said + f"; a corner {where}? Split there, the two parts fit at rms "
             f"{fmt(m.parts[0], 3)} and {fmt(m.parts[1], 3)}")
 
