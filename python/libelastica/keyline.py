@@ -368,7 +368,8 @@ def fit_keyline(points, r: Optional[float] = None, model: str = "discrete", side
     else:
         inputs, ends, local = dist.copy(), None, data    # the input points themselves were fitted
     # the points' noise against the keyline's distances to them (a held h: its own cost)
-    m = misfit(local, inputs) if not kwargs.get("fixed") else None
+    # (no stray points tried: the others' fit would be one elastica's, not a keyline's)
+    m = misfit(local, inputs, strays=False) if not kwargs.get("fixed") else None
     if m is not None:
         said = misfit_summary(m, what="one keyline (its joint is an inflection, G2)")
         warnings.warn(f"fit_keyline: {said}", MisfitWarning, stacklevel=2)

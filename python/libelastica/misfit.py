@@ -397,22 +397,26 @@ def _corner(pts: np.ndarray, noise: float):
     return best[0], best[1]
 
 
-def misfit(points, distances, corner: bool = True) -> Optional[Misfit]:
+def misfit(points, distances, corner: bool = True, strays: bool = True) -> Optional[Misfit]:
     """Whether a fit lies far farther from its points than their own noise: their rms above
     MISFIT_RATIO x :func:`noise_level` and MISFIT_FLOOR of the points' extent
     (MISFIT_MIN_POINTS distinct points at least; none of them far, :func:`far_points`); then a
     :class:`Misfit` (with ``corner``: where the points turn most and the two parts split
     there each fit within MISFIT_RATIO x the noise, their curves turning there by more than
-    CORNER_TURN; two smooth fits per candidate), else None.
+    CORNER_TURN; two smooth fits per candidate), else None. Where no corner stands out,
+    with ``strays`` the farthest points are left out and the others fitted again as one
+    smooth elastica (Misfit.strays): False for a fit of another shape (a keyline's), whose
+    figures one elastica's would not match.
     points (n, 2): the fitted points; distances (n,): theirs to the curve."""
     pts = as_points(points, "misfit: points", 2)
     d = np.asarray(distances, dtype=float)
     if d.shape != (len(pts),):
         raise ValueError("misfit: distances (n,) for points (n, 2) are needed")
-    return _verdict(_Figures(pts), d, float(np.sqrt(np.mean(d * d))), corner)
+    return _verdict(_Figures(pts), d, float(np.sqrt(np.mean(d * d))), corner, strays)
 
 
-def _verdict(fig: _Figures, d: np.ndarray, rms_all: float, corner: bool = True) -> Optional[Misfit]:
+def _verdict(fig: _Figures, d: np.ndarray, rms_all: float, corner: bool = True,
+             strays: bool = True) -> Optional[Misfit]:
     """misfit of the points of ``fig`` (:class:`_Figures`: the figures computed once for all
     verdicts of the same points), their distances and their rms (a fit's own, el.fit's
     path: 0.011 ms of a 1000-point discrete fit's 0.5 where it is silent). Its first test
@@ -438,9 +442,9 @@ def _verdict(fig: _Figures, d: np.ndarray, rms_all: float, corner: bool = True) 
     if not (rms > MISFIT_RATIO * noise and rms > MISFIT_FLOOR * extent):
         return None
     at, parts = _corner(pts, noise) if corner else (-1, None)
-    strays = _strays(pts, d, noise) if corner and at < 0 else ((), None)
-    return Misfit(rms, noise, rms / noise if noise > 0 else np.inf, at, parts, strays[0],
-                  tuple(float(abs(d[i])) for i in strays[0]), strays[1])
+    far = _strays(pts, d, noise) if corner and strays and at < 0 else ((), None)
+    return Misfit(rms, noise, rms / noise if noise > 0 else np.inf, at, parts, far[0],
+                  tuple(float(abs(d[i])) for i in far[0]), far[1])
 
 
 def _strays(pts: np.ndarray, d: np.ndarray, noise: float):
@@ -510,7 +514,7 @@ def _point_named(i: int, points, fmt: LengthFormat, numbered: bool, named) -> st
             if numbered or not place else place)
 
 
-def _strays_said(m: Misfit, points, fmt: LengthFormat, numbered: bool, named) -> str:
+def _strays_said(m: Misfit, points, fmt: LengthFormat, numbered: bool, named, what: str) -> str:
     """misfit_summary's words where no corner stands out: the farthest points named, as the
     cause where they account for the misfit (Misfit.strays_account), else as not the cause;
     a corner never named (none stands out)."""
@@ -524,8 +528,9 @@ def _strays_said(m: Misfit, points, fmt: LengthFormat, numbered: bool, named) ->
                 f"{'it' if one else 'them'} to fit the rest")
     why = (f", and the farthest point is not the cause ({far}; without it rms "
            f"{fmt(m.without, 3)})" if m.strays else "")
-    return (f": no corner stands out{why}; a shape no one elastica takes, or curves of more "
-            "than one piece: fit each alone, or pass an elastic spline through the points")
+    return (f": no corner stands out{why}; {what} does not take their shape, or they are "
+            "curves of more than one piece: fit each alone, or pass an elastic spline through "
+            "the points")
 
 
 def misfit_summary(m: Misfit, points=None, unit: str = "", numbered: bool = True,
@@ -554,7 +559,7 @@ def misfit_summary(m: Misfit, points=None, unit: str = "", numbered: bool = True
                     "one keyline (fit_keyline takes an open piece with one inflection): cut "
                     "it into open pieces (points[i:j]) that turn one way (fit) or hold one "
                     "inflection each (fit_keyline) and fit each alone")
-        return said + _strays_said(m, points, fmt, numbered, named)
+        return said + _strays_said(m, points, fmt, numbered, named, what)
     where = "at " + _point_named(m.corner, points, fmt, numbered, named)
     return (said + f"; a corner {where}? Split there, the two parts fit at rms "
             f"{fmt(m.parts[0], 3)} and {fmt(m.parts[1], 3)}")

@@ -312,9 +312,11 @@ class FitResultTest(S.DocTest):
                     continue
                 self.assertEqual(len(said), 1, (model, list(f.Warnings)))
                 self.assertIn("2 of 40 points lie", said[0])
-                top = S.SKETCH_PLACEMENT.multVec(App.Vector(*glitched[25], 0))
-                self.assertIn(f"the farthest at ({U.number_text(top.x)}, {U.number_text(top.y)}, "
-                              f"{U.number_text(top.z)})", said[0])
+                # named as the designer finds them (QA qagui F6): numbers as given (from 1)
+                # and the farthest's place in the sketch's coordinates, not global ones
+                top = glitched[25]
+                self.assertIn(f"(points 11, 26 as given; the farthest, 26, in the sketch at "
+                              f"({U.number_text(top[0])}, {U.number_text(top[1])}) mm)", said[0])
                 # under Imperial decimal (a panel opened after the change: proxy.said) the
                 # figures and the place in inches (the place stayed in mm)
                 from freecad.elastica.proxy import said as said_now
@@ -324,8 +326,8 @@ class FitResultTest(S.DocTest):
                     inch = [w for w in said_now(f, "Warnings") if "outliers?" in w][0]
                 finally:
                     App.Units.setSchema(schema)
-                place = ", ".join(U.number_text(v / 25.4) for v in (top.x, top.y))   # exact, in inches
-                self.assertIn(f"the farthest at ({place}, ", inch)
+                place = ", ".join(U.number_text(v / 25.4) for v in top)   # exact, in inches
+                self.assertIn(f"the farthest, 26, in the sketch at ({place}) in)", inch)
                 self.assertNotIn("mm", inch)
 
     def test_a_fit_that_swings_between_two_points_is_named(self):

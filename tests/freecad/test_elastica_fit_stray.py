@@ -38,7 +38,7 @@ class FitStrayTest(S.DocTest):
             self.assertEqual(list(f.PointNumbers), list(range(1, 19)), model)
             said = [w for w in say(list(f.Warnings)) if "dragged off?" in w]
             self.assertEqual(len(said), 1, (model, list(f.Warnings)))
-            self.assertIn("(point 11 as given, at (", said[0])
+            self.assertIn("(point 11 as given, in the sketch at (", said[0])
             self.assertIn("1 of 18 points lies", said[0])
 
     def test_the_sketch_without_it_draws_no_such_warning(self):

@@ -175,14 +175,14 @@ class MeasuredTextsTest(S.DocTest):
         xy[[10, 25]] += [[0.12, -0.09], [-0.20, 0.15]]
         f = Fi.make(self.doc, [(S.points_sketch(self.doc, xy, "Glitches"), [])], Model="smooth")
         self.doc.recompute()
-        top = S.SKETCH_PLACEMENT.multVec(App.Vector(*xy[25], 0))
+        top = xy[25]                                  # in the sketch (QA qagui F6)
         for schema, unit, factor in ((STANDARD, "mm", 1.0), (MKS, "m", 1000.0),
                                      (US_CUSTOMARY, '"', 25.4), (IMPERIAL_DECIMAL, "in", 25.4)):
             App.Units.setSchema(schema)
             said_now = [w for w in said(f, "Warnings") if "outliers?" in w]
             self.assertEqual(len(said_now), 1, list(f.Warnings))
-            place = ", ".join(U.number_text(v / factor) for v in (top.x, top.y, top.z))
-            self.assertIn(f"(the farthest at ({place}) {unit}): ", said_now[0])
+            place = ", ".join(U.number_text(v / factor) for v in top)
+            self.assertIn(f"the farthest, 26, in the sketch at ({place}) {unit}): ", said_now[0])
 
 
 if __name__ == "__main__":

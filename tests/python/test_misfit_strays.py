@@ -64,3 +64,21 @@ def test_el_fit_warns_the_same_words():
         el.fit(P, model="smooth")
     said = [str(x.message) for x in w if issubclass(x.category, el.MisfitWarning)]
     assert len(said) == 1 and "the farthest 2 points account for it" in said[0]
+
+
+def test_a_keyline_misfit_tries_no_stray_points():
+    # the others' refit would be one elastica's, not a keyline's (F7 split: 2.58 'without'
+    # the farthest against the keyline's 2.35 with it): no point named, no corner guessed
+    rng = np.random.default_rng(1)
+    rng.normal(0, 0.4, 12)
+    s = np.sort(rng.uniform(0, 1, 40))
+    P = np.column_stack([400 * s, 80 * np.sin(2.2 * s * np.pi) + rng.normal(0, 0.3, 40)])
+    P[17, 1] += 9.0
+    with warnings.catch_warnings(record=True) as w:
+        warnings.simplefilter("always")
+        el.fit_keyline(P, model="smooth")
+    said = [str(x.message) for x in w if issubclass(x.category, el.MisfitWarning)]
+    assert len(said) == 1 and "no corner stands out;" in said[0], said
+    assert "farthest" not in said[0] and "a corner" not in said[0]
+    m = el.misfit(P, _fit(P).distances, strays=False)
+    assert m.strays == () and m.without is None

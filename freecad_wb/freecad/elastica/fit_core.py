@@ -316,21 +316,44 @@ def _coarse_keyline(xy, smooth, rms):
             "resampled polygon cuts their bends; choose Model Smooth elastica for so few points"]
 
 
-def _far_points(data, dist, plane, free=None):
+def _point_named(i, numbers, data, plane, sketch):
+    """How a warning names fitted point i, the way the designer finds it (QA qagui F6: an
+    outlier placed at global '(1835, 8.736, -278) mm', no number, was vertex 24 at (1556,
+    -624.2) in the Sketcher): its number as given (from 1: PointNumbers') and its place in
+    the sketch's own coordinates (``sketch``: its global placement, inverted; None, or a
+    point not in its plane: global coordinates). data: (n, 3) in the frame ``plane``."""
+    at = plane.multVec(App.Vector(*map(float, data[i])))
+    where = ""
+    if sketch is not None:
+        local = sketch.inverse().multVec(at)
+        if abs(local.z) <= 1e-9 * (1.0 + at.Length):
+            at, where = App.Vector(local.x, local.y, 0.0), "in the sketch "
+    xyz = (at.x, at.y) if where else (at.x, at.y, at.z)
+    # the unit named after the place: after '... within 24.7 \u00b5m' its mm read as \u00b5m
+    return (f"point {int(numbers[i])} as given, {where}at "
+            f"({', '.join(coordinate_mark(v) for v in xyz)}) {length_unit_mark(written=True)}")
+
+
+def _far_points(data, dist, plane, free=None, numbers=None, sketch=None):
     """The warning for points far from the fitted curve (el.far_points: glitches of a scan,
-    points of other geometry), naming the farthest's place, else none. data: (n, 3) in the
-    frame ``plane``; free: their distances to the fit with free ends (points held off only
-    by the end conditions are no outliers to remove)."""
+    points of other geometry), naming them by number as given and the farthest's place
+    (_point_named), else none. data: (n, 3) in the frame ``plane``; free: their distances
+    to the fit with free ends (points held off only by the end conditions are no outliers
+    to remove); numbers: each one's number as given (default 1 .. n); sketch: the sketch's
+    placement (its coordinates named), or None."""
     n = np()
     far = el().far_points(dist, data, free_distances=free)
     if not len(far):
         return []
+    numbers = n.arange(1, len(data) + 1) if numbers is None else numbers
     farthest = far[n.argmax(n.abs(n.asarray(dist if free is None else free, dtype=float))[far])]
-    worst = plane.multVec(App.Vector(*map(float, data[farthest])))
-    at = ", ".join(coordinate_mark(v) for v in (worst.x, worst.y, worst.z))   # units.say
+    named = _point_named(farthest, numbers, data, plane, sketch)
+    if len(far) > 1:
+        listed = sorted(int(numbers[i]) for i in far)
+        named = (f"points {', '.join(map(str, listed[:10]))}{', ...' if len(listed) > 10 else ''}"
+                 f" as given; the farthest, {named.split(' ', 1)[1].replace(' as given', '', 1)}")
     said = el().far_points_summary(dist, far, free_distances=free, length=figure_mark)
-    # the place's unit named: after '... within 24.7 \u00b5m' its mm read as \u00b5m
-    return [f"{said} (the farthest at ({at}) {length_unit_mark(written=True)}): "
+    return [f"{said} ({named}): "
             "outliers? Each pulls the fit towards itself: remove them to fit the rest"]
 
 
@@ -341,33 +364,32 @@ def _as_given(numbers):
     return list(numbers) in (k, k[::-1])
 
 
-def _stray(result, numbers, plane):
+def _stray(result, numbers, plane, data, sketch):
     """The warning for one stray point among a hand sketch's few (el.stray_point: far from
     the curve through the others, which it pulls; QA25gui F1: one of 18 sketched points
-    mis-dragged 150 mm off, fitted with no word), naming it by its number as given (from 1,
-    PointNumbers') and its place, else none. result: the library's fit of the points as
-    fitted (in the plane), numbers: each fitted point's number as given."""
+    mis-dragged 150 mm off, fitted with no word), naming it by its number as given and its
+    place (_point_named), else none. result: the library's fit of the points as fitted (in
+    the plane), numbers: each fitted point's number as given, data: the points (n, 3) in
+    the frame ``plane``, sketch: the sketch's placement or None."""
     stray = binding_module("stray").stray_point(result)
     if stray is None:
         return []
-    i, number = stray[0], int(numbers[stray[0]])
-    x, y = (float(v) for v in result.points[i])
-    at = plane.multVec(App.Vector(x, y, 0.0))
-    # the number as the user sees it (from 1), not the binding's "counted from 0"
-    named = (f"point {number} as given, at "
-             f"({', '.join(coordinate_mark(v) for v in (at.x, at.y, at.z))}) "
-             f"{length_unit_mark(written=True)}")
-    return [binding_module("misfit").stray_summary(len(result.points), stray, number,
-                                                   length=figure_mark, named=named)]
+    i = stray[0]
+    return [binding_module("misfit").stray_summary(
+        len(result.points), stray, int(numbers[i]), length=figure_mark,
+        named=_point_named(i, numbers, data, plane, sketch))]
 
 
-def _misfit(xy, dist, plane, split):
+def _misfit(xy, dist, plane, split, numbers, data, sketch):
     """The warning for points far farther from the fit than their own noise (el.misfit: they
-    are not one elastica, or keyline), naming the likely corner's place, else none. xy (n, 2)
-    in the frame ``plane``, dist: their distances to the curve in it (None: not judged)."""
+    are not one elastica, or keyline), naming the likely corner or the farthest points
+    (_point_named), else none. xy (n, 2) in the frame ``plane``, dist: their distances to the
+    curve in it (None: not judged); numbers, data (n, 3), sketch: as _point_named's."""
     if dist is None:
         return []
-    m = el().misfit(np().ascontiguousarray(xy, dtype=float), np().asarray(dist, dtype=float))
+    # (a keyline's: no stray points tried, the others' refit would be one elastica's)
+    m = el().misfit(np().ascontiguousarray(xy, dtype=float), np().asarray(dist, dtype=float),
+                    strays=not split)
     if m is None:
         # too few points for a verdict (QA22gui F7: 12 clicks across an inflection fitted
         # 1.92 mm, nothing said; split 0.41): the keyline asked where they turn both ways
@@ -377,7 +399,8 @@ def _misfit(xy, dist, plane, split):
         return [hint] if hint else []
     at = [plane.multVec(App.Vector(float(x), float(y), 0.0)) for x, y in xy]
     said = el().misfit_summary(m, [(v.x, v.y, v.z) for v in at], numbered=False, length=exact_mark,
-                               what="one keyline" if split else "one elastica")
+                               what="one keyline" if split else "one elastica",
+                               named=lambda i: _point_named(i, numbers, data, plane, sketch))
     return [said]
 
 
@@ -443,6 +466,7 @@ def fit_core(points, plane=None, ordered=True, closed=False, model="discrete", s
         if model == "smooth" and distance == "paired":
             raise InputProblem("a smooth keyline is fitted by point-to-curve distance: set "
                                "Distance to point to curve, or fit in one piece")
+    sketch = plane                     # a sketch's placement: its points are named in it
     try:
         xy, plane = plane_coordinates(points, plane, flat=None)
         # the user's points in the fit's frame: plane coordinates and distance from the plane
@@ -514,9 +538,12 @@ def fit_core(points, plane=None, ordered=True, closed=False, model="discrete", s
         # adds its cost to those distances (the step's cost is said apart)
         judged = None if split or resampled else binding_module("fit").judged_fit(
             results[0], constraints, _distance(model, distance))
-        misfit = _misfit(user[:, :2], dist, plane, True) if split else \
-            (_misfit(user[:, :2], dist, plane, False) if not constraints else []) if resampled else \
-            _misfit(judged.points, judged.distances, plane, False) if judged is not None else []
+        named = (numbers, user, sketch)
+        misfit = _misfit(user[:, :2], dist, plane, True, *named) if split else \
+            (_misfit(user[:, :2], dist, plane, False, *named) if not constraints else []) \
+            if resampled else \
+            _misfit(judged.points, judged.distances, plane, False, *named) \
+            if judged is not None else []
         dist = n.copysign(n.hypot(dist, user[:, 2]), dist)
         rms, max_error = _rms(dist), float(n.abs(dist).max())
         data = user
@@ -526,9 +553,10 @@ def fit_core(points, plane=None, ordered=True, closed=False, model="discrete", s
         warnings = warnings + (_left_out(beyond, dist, step, used) if split else []) + \
             _off_plane(user[:, 2], plane_rms, size) + \
             (_far_points(data[~beyond], dist[~beyond], plane,
-                         None if resampled or free_dist is None else free_dist[~beyond])
+                         None if resampled or free_dist is None else free_dist[~beyond],
+                         numbers[~beyond], sketch)
              or ([] if split or resampled or constraints or not _as_given(numbers)
-                 else _stray(results[0], numbers, plane))) + \
+                 else _stray(results[0], numbers, plane, user, sketch))) + \
             ([] if split else _wanders(results[0], plane)) + misfit
     except InputProblem:
         raise
