@@ -282,9 +282,14 @@ class G2QuadTest(S.DocTest):
         src = self.sk.Shape.Edges[0]
         for end in (src.Vertexes[0].Point, src.Vertexes[-1].Point):
             self.assertLess(q.Shape.distToShape(Part.Vertex(end))[0], 1e-9)
-        del C.MESSAGES[:]
-        self.assertIsNone(C.g2quad_sources([(self.sk, ["Edge1"])], open_panel=False, Edges=3))
-        self.assertIn("Edges = 6 covers it", C.MESSAGES[-1])
+        # the command makes it all the same, in error, its Edges to edit (QA gui F2)
+        made = C.g2quad_sources([(self.sk, ["Edge1"])], open_panel=False, Edges=3)
+        self.assertIsNotNone(made)
+        self.assertIn("Invalid", made.State)
+        self.assertRegex(made.Status, r"^error: Edges = 3 leaves out .*Edges = 6 covers it$")
+        made.Edges = 6
+        self.doc.recompute()
+        self.assertEqual(made.Status, "ok")
 
     def test_a_short_end_piece_is_refused_without_building_every_count(self):
         """QA22gui F6: a plain wavy curve (20 sin(x / 30) interpolated, an inflection 2.06 mm
@@ -348,21 +353,33 @@ class G2QuadTest(S.DocTest):
     def test_a_source_too_short_beyond_an_inflection_is_not_a_wrong_selection(self):
         """QA22gui F6: one open edge selected, and the box said 'Wrong selection ... Select
         one open edge or sketch curve.': the edge was what the command takes, its end piece
-        beyond an inflection is not. The command's check raises a ShapeProblem, said as
-        such (the toolbar's box titled by the command, no 'Select ...')."""
+        beyond an inflection is not. The command's check raises a ShapeProblem; where a
+        count covers it (an EdgesProblem) the feature is made, in error, no box (QA gui
+        F2); where none does, said as such (the toolbar's box titled by the command, no
+        'Select ...')."""
         from freecad.elastica.proxy import ShapeProblem
         said = []
 
         def wrong(text, selection=True):
             said.append((text, selection))
         wrong.shapes = True
-        self.assertIsNone(C.g2quad_sources([(self.sk, ["Edge1"])], open_panel=False, Edges=3,
+        made = C.g2quad_sources([(self.sk, ["Edge1"])], open_panel=False, Edges=3, wrong=wrong)
+        self.assertEqual(said, [])
+        self.assertIn("Edges = 6 covers it", made.Status)
+        with self.assertRaises(Q.EdgesProblem):
+            Q.g2quad_core(self.sk.Shape.Edges, None, 3)
+        c = Part.BSplineCurve()     # no count covers it (its inflection 2.06 mm from its start)
+        c.interpolate([App.Vector(x, 20 * math.sin(x / 30), 0) for x in range(0, 190, 10)])
+        wavy = self.doc.addObject("Part::Feature", "Wavy")
+        wavy.Shape = c.toShape()
+        self.doc.recompute()
+        self.assertIsNone(C.g2quad_sources([(wavy, ["Edge1"])], open_panel=False, Edges=8,
                                            wrong=wrong))
         self.assertEqual(len(said), 1)
-        self.assertIn("Edges = 6 covers it", said[0][0])
+        self.assertIn("none up to Edges = 64 tried covers it", said[0][0])
         self.assertFalse(said[0][1])
         with self.assertRaises(ShapeProblem):
-            Q.g2quad_core(self.sk.Shape.Edges, None, 3)
+            Q.g2quad_core(wavy.Shape.Edges, None, 8)
         said[:] = []        # a wrong selection still is one
         C.g2quad_sources([(self.sk, ["Vertex1"])], open_panel=False, wrong=wrong)
         self.assertEqual([s for _, s in said], [True])

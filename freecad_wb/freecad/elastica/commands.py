@@ -542,7 +542,13 @@ def g2quad_sources(sources, open_panel=True, wrong=message, **options):
 
     def check():
         edges, plane = src_mod.gather_edges(sources, element=element_as_followed)
-        checked.append(checked_call(g2quad.g2quad_core, edges, plane, opts["Edges"]))
+        try:
+            checked.append(checked_call(g2quad.g2quad_core, edges, plane, opts["Edges"]))
+        except g2quad.EdgesProblem:
+            # another Edges builds it: the feature made all the same, in error (its Status
+            # names the count), with its panel's Edges box to type it in, as FreeCAD's own
+            # features are (QA gui F2: refused in a box whose advice had nowhere to go)
+            pass
 
     return _check_and_create(
         "G2 quadratic B-spline", "G2 quadratic B-spline", check,
@@ -553,7 +559,7 @@ def g2quad_sources(sources, open_panel=True, wrong=message, **options):
 
 class G2QuadCommand(_Command):
     pixmap, menu = "g2quad", "G2 quadratic B-spline"
-    needs = "one open edge or sketch curve"
+    needs = "an edge or sketch curve, or a chain of them (open or closed)"
     tip = ("A curvature-continuous uniform quadratic B-spline (seed 002) of the selected "
            "edge or sketch curve, ending exactly on it, split at its inflections")
     run = staticmethod(g2quad_sources)
