@@ -2,6 +2,7 @@
 ElasticaError subclass) at every public entry, never TypeError, OverflowError,
 AttributeError or a silent conversion; complex, datetime and float16 input is
 refused; requests past the C library's limits say what is possible."""
+import warnings
 from decimal import Decimal
 from fractions import Fraction
 
@@ -9,6 +10,7 @@ import numpy as np
 import pytest
 
 import libelastica as el
+from libelastica.fit import OUTLIER_MIN_POINTS
 
 ARC = np.c_[np.cos(np.linspace(0, 2.5, 60)), np.sin(np.linspace(0, 2.5, 60))]
 CURVE = el.SmoothElastica(x0=0, y0=0, phi=0, mu=1.0, k=0.8, q=0.0, length=5.0)
@@ -363,6 +365,54 @@ def test_masked_points_are_refused_naming_the_fix():
     assert kept.rms < 1e-6
     nothing = np.ma.masked_array(P, mask=np.zeros(P.shape, bool))
     assert el.fit(nothing, model="smooth").rms == el.fit(P, model="smooth").rms
+
+
+class _Tagged(np.ndarray):
+    """An ndarray subclass of a user's (units, metadata)."""
+
+
+def _warned_fit(points, model):
+    """el.fit of ``points`` and the texts of its warnings (categories named)."""
+    with warnings.catch_warnings(record=True) as said:
+        warnings.simplefilter("always")
+        r = el.fit(points, model=model)
+    return r, [f"{w.category.__name__}: {w.message}" for w in said]
+
+
+def _same_as_plain(P):
+    """el.fit of P's subclasses, lists and orders: the plain array's fit, warnings and
+    outliers (the stray click P holds named), in both models."""
+    same = [np.matrix(P), P.view(_Tagged), np.ma.masked_array(P),
+            np.ma.masked_array(P, mask=np.zeros(P.shape, bool)),
+            np.ma.masked_array(np.matrix(P)), P.tolist(), np.asfortranarray(P)]
+    for model in ("discrete", "smooth"):
+        want, want_said = _warned_fit(P, model)
+        assert len(el.fit_outliers(want)) == 1 and "OutlierWarning" in want_said[0]
+        for a in same:
+            got, said = _warned_fit(a, model)
+            assert said == want_said
+            assert type(got.points) is np.ndarray and np.array_equal(got.points, P)
+            assert got.curve == want.curve and np.array_equal(got.distances, want.distances)
+            assert np.array_equal(el.fit_outliers(got), el.fit_outliers(want))
+
+
+@pytest.mark.filterwarnings("ignore:the matrix subclass:PendingDeprecationWarning")
+def test_array_subclasses_are_their_data():
+    """as_real_array asks np.ma.is_masked of subclasses only (an exact ndarray has no mask):
+    np.matrix, a user's subclass, masked arrays with nothing masked (nomask, an all-False
+    mask, a masked matrix) and a list give the plain array's fit and outliers, in both
+    models, with the same warnings, also at 19 points (OUTLIER_MIN_POINTS - 1: misfit's
+    _fit_outliers asks stray_point below it only); a masked value is refused in each
+    subclass that can hold one."""
+    for n in (12, OUTLIER_MIN_POINTS - 1):   # (19: the last n stray_point is asked at)
+        P = el.SmoothElastica(k=0.6, q=-1.2, length=8.0).points(np.linspace(0, 8.0, n))
+        P[n // 2] += [0.0, 0.4]   # a hand sketch's stray click: stray_point names it
+        _same_as_plain(P)
+    mask = np.zeros(P.shape, bool)
+    mask[3, 1] = True
+    for masked in (np.ma.masked_array(P, mask=mask), np.ma.masked_array(np.matrix(P), mask=mask)):
+        with pytest.raises(ValueError, match=r"masked array .*np\.ma\.compress_rows"):
+            el.fit(masked)
 
 
 def test_elliptic_modulus_one_is_named():
