@@ -1,11 +1,10 @@
 """freecadcmd -t test of the tensions' properties: one bound to an expression of another unit
 is refused, naming the unit (QA19gui F9: a cell '=5 mm' was taken as 5 1/mm^2: FreeCAD 0.20's
 PropertyQuantity takes no unit of 1/length^2), while '=0.002 / in^2' and a plain number still
-drive it; they are float constraint properties, which the property view shows to the decimals
-of the Units preference as every float of FreeCAD's (precision ones showed 16 whatever it said),
-taking any double (a compression too), also once reopened, and documents of version 3 (float
-tensions) and 5 (precision tensions) open with them, their values, expression and pick kept,
-untouched."""
+drive it; they are precision properties, which the property view shows with their digits (F10:
+a float one's 0.001 as "0.00"), taking any double (a compression too), also once reopened, and
+a document of version 3 (float tensions) opens with them, its values, expression and pick
+kept, untouched."""
 import unittest
 
 import FreeCAD as App
@@ -52,12 +51,12 @@ class TensionUnitTest(unittest.TestCase):
                 self.assertAlmostEqual(f.Tension, value, delta=1e-15)
 
 
-    def test_tensions_are_float_constraints_and_old_documents_load(self):
+    def test_tensions_are_precision_properties_and_old_documents_load(self):
         b, s = self._features()
         names = {b: ("Tension", "BlendTension"), s: ("Tension", "SplineTension")}
         for f, props in names.items():
             for p in props:
-                self.assertEqual(f.getTypeIdOfProperty(p), "App::PropertyFloatConstraint", (f.Label, p))
+                self.assertEqual(f.getTypeIdOfProperty(p), "App::PropertyPrecision", (f.Label, p))
         b.Tension = -1e-5                               # compression: not clamped to 0
         self.assertEqual(b.Tension, -1e-5)
         b.Tension = 0.001
@@ -69,15 +68,12 @@ class TensionUnitTest(unittest.TestCase):
         self.doc.recompute()
         figures = (b.BlendTension, b.Shape.Length, s.Tension, s.SplineTension, s.Shape.Length)
 
-        def as_type(old):
-            def edit(text):
-                new = 'type="App::PropertyFloatConstraint"'
-                self.assertEqual(text.count(new), 4)
-                return text.replace(new, f'type="{old}"')
-            return edit
+        def as_version_3(text):
+            new = 'type="App::PropertyPrecision"'
+            self.assertEqual(text.count(new), 4)
+            return text.replace(new, 'type="App::PropertyFloat"')
         bname, sname = b.Name, s.Name
-        # version 3's float tensions, version 5's precision ones
-        for edit in (None, as_type("App::PropertyFloat"), as_type("App::PropertyPrecision")):
+        for edit in (None, as_version_3):
             name = self.doc.Name
             path = S.temp_path(self, "saved.FCStd")
             self.doc.saveAs(path)
@@ -92,7 +88,7 @@ class TensionUnitTest(unittest.TestCase):
             for f, props in ((b, ("Tension", "BlendTension")), (s, ("Tension", "SplineTension"))):
                 self.assertNotIn("Touched", f.State, f.Label)
                 for p in props:
-                    self.assertEqual(f.getTypeIdOfProperty(p), "App::PropertyFloatConstraint")
+                    self.assertEqual(f.getTypeIdOfProperty(p), "App::PropertyPrecision")
             # exact: not the file's 16 decimals (the shapes: as the file's BRep keeps them)
             self.assertEqual((b.BlendTension, s.Tension, s.SplineTension),
                              (figures[0], figures[2], figures[3]))

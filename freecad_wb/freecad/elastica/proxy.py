@@ -106,23 +106,19 @@ def add_length(obj, name, group, tip, value=None):
         obj.setExpression(name, expression)
 
 
-# A tension (1/mm^2) the designer types is an App::PropertyFloatConstraint: FreeCAD's
-# property view shows it, as every float of its own, to the decimals of Edit > Preferences >
-# General > Units (UnitsApi::getDecimals: PropertyFloatConstraintItem). Not
-# App::PropertyPrecision (documents of versions 4 and 5), which the view shows to 16
-# decimals whatever the preference (PropertyPrecisionItem: '0.0006340000000000'). FreeCAD
-# 0.20 has no typed property of 1/length^2, and a tension below 0.005 1/mm^2 reads 0.00 at its default 2 decimals (its
-# panel's Tension box keeps its digits: units.number_text). Its bounds are opened to every
+# A tension (1/mm^2) the designer types is an App::PropertyPrecision: FreeCAD's property
+# view shows a float property with 2 decimals (0.001 as "0.00", QA19gui F10), a precision one
+# with 16 (FreeCAD 0.20 has no typed property of 1/length^2). Its bounds are opened to every
 # double (its own, [0, max], clamp a compression to 0) and set again on restore: a file keeps
 # no bounds.
-PER_AREA = "App::PropertyFloatConstraint"
+PER_AREA = "App::PropertyPrecision"
 _ANY = (-sys.float_info.max, sys.float_info.max, 1e-4)     # bounds, arrows' step
 
 
 def add_per_area(obj, name, group, tip, value=0.0):
     """A tension property (PER_AREA). Documents of version 3 stored it as
-    App::PropertyFloat, of versions 4 and 5 as App::PropertyPrecision: that property is
-    replaced, its value and expression kept (as on every restore, its bounds set again)."""
+    App::PropertyFloat: that property is replaced, its value and expression kept (as on
+    every restore, its bounds set again)."""
     expression = None
     if name not in obj.PropertiesList:
         obj.addProperty(PER_AREA, name, group, tip)
