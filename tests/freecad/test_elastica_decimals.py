@@ -6,10 +6,12 @@ helper, units.number_text, as FreeCAD's Base::Quantity::getUserString writes a q
 whatever the preference said. And an integer box opens the expression editor on '=' as
 FreeCAD's Gui::IntSpinBox (spinboxes.IntBox)."""
 import os
+import re
 import sys
 import unittest
 
 import FreeCAD as App
+import numpy as np
 
 os.environ.setdefault("QT_QPA_PLATFORM", "offscreen")      # freecadcmd: no display
 from PySide import QtCore, QtGui  # noqa: E402
@@ -106,9 +108,46 @@ class DecimalsTest(unittest.TestCase):
                 self.assertTrue(text.startswith(f"error: Length = {user_string(50.0, d)} is not "
                                                 "longer than the polygon"), text)
                 polygon = text.split("points (")[1].split(" mm)")[0]
-                self.assertEqual(len(polygon.split(".")[1]), d, text)
+                # the library's lower bound ('any length above it') keeps its written
+                # digits: '328.182', not '328.18' (below the polygon's 328.1817...)
+                self.assertEqual(len(polygon.split(".")[1]), max(d, 3), text)
+                self.assertTrue(polygon.startswith("328.182"), text)
         finally:
             App.closeDocument(doc.Name)
+
+    def test_bounds_rounded_to_their_safe_side(self):
+        """A figure a text says to stay above (a step of at least) is written rounded up,
+        one to stay below (a step under) rounded down, at every Decimals; a '<n> mm' of a
+        library message keeps the digits it was written with (its 'raise tol to 0.00123 mm
+        or more' was '0.0012 mm' at 2: below the tol it asks for); Decimals 0 writes a
+        number below 1 with 1 significant digit, not '0'."""
+        from freecad.elastica import fit_core as F
+        most = F.el().RESAMPLE_MAX_VERTICES
+        for d in (0, 2, 6):
+            self.at(d)
+            for length in (3.29756e-4 * (most - 1), 123.4561 * (most - 1), 0.0712341 * 29):
+                xy = np.column_stack([np.linspace(0.0, length, 40), np.zeros(40)])
+                length = F.polyline_length(xy)             # as the message takes it
+                least = length / (most - 1)
+                with self.assertRaises(F.InputProblem) as e:
+                    F._resampled(xy, least / 2)
+                text = U.say(str(e.exception))
+                shown = re.search(r"at least ([-\d.e+]+) (\S+),", text)
+                factor, unit = U.user_length(least)        # as said computes it
+                self.assertEqual(shown.group(2), unit)
+                self.assertGreaterEqual(float(shown.group(1)), least / factor, (d, text))
+                under = U.say(F._step_advice(length))
+                shown = re.search(r"a step under ([-\d.e+]+) (\S+);", under)
+                factor, unit = U.user_length(length / (F.MIN_POINTS - 1))
+                self.assertEqual(shown.group(2), unit)
+                self.assertLessEqual(float(shown.group(1)),
+                                     length / (F.MIN_POINTS - 1) / factor, (d, under))
+            said = U.say(U.mm_marked("raise tol to 0.00123 mm or more"))
+            self.assertRegex(said, "to 1\\.230* \u00b5m or", d)      # Standard: in µm
+            said = U.say(U.mm_marked("raise tol to 0.0123 mm or more"))
+            self.assertRegex(said, "to 12\\.30* \u00b5m or", d)
+            self.assertNotEqual(U.number_text(0.4), "0", d)
+            self.assertEqual(U.number_text(0.4), "0.4" + "0" * max(0, d - 1), d)
 
     def test_integer_box_equals_opens_the_editor(self):
         """'=' in an integer box calls its editor (the panel's: FreeCAD's expression editor

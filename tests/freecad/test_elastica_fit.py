@@ -1478,7 +1478,8 @@ class FitBadInputTest(S.DocTest):
         left = len(el.resampled_polygon(xy, 100.0))     # the fit's: ended at the last point
         self.assertLess(left, Fc.MIN_POINTS)
         self.assertIn(f"Resample = 100.00 mm leaves {left} points; a fit needs {Fc.MIN_POINTS}", msg)
-        self.assertIn(f"need a step under {U.number_text(length / (Fc.MIN_POINTS - 1))} mm", msg)
+        self.assertIn(f"need a step under "
+                      f"{U.number_text(length / (Fc.MIN_POINTS - 1), bound='down')} mm", msg)
 
     def test_resample_step_too_fine(self):
         xy, _ = S.keyline_xy(20)
@@ -1488,7 +1489,10 @@ class FitBadInputTest(S.DocTest):
         # 0.0003298 mm in the unit FreeCAD's Standard schema picks for it: nm
         self.assertLess(length / (most - 1), 1e-3)
         self.assertIn(f"more than {most - 1}: use a step of at least "
-                      f"{U.number_text(length / (most - 1) * 1e6)} nm", msg)
+                      f"{U.number_text(length / (most - 1) * 1e6, bound='up')} nm", msg)
+        # a lower bound rounded up: 329.76 nm, not 329.75 (below the 329.7557 nm it names)
+        shown = float(msg.split("at least ")[1].split(" nm")[0])
+        self.assertGreaterEqual(shown, length / (most - 1) * 1e6)
         # the library's own limit: a step just above it is taken
         self.assertGreater(len(el.resample_equilateral(xy, 1.001 * length / (most - 1))), 0.99 * most)
 

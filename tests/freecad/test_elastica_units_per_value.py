@@ -75,6 +75,22 @@ class UnitsPerValueTest(unittest.TestCase):
         self.assertEqual(m.group(2), unit, (text, mm, App.Units.getSchema()))
         self.assertEqual(m.group(1), freecad_number(mm, d), (text, mm, d))
 
+    def assert_kept(self, text, written, d):
+        """``text`` is a '<number> mm' mark ``written`` in the unit FreeCAD picks for it: as
+        FreeCAD writes it at ``d`` decimals where that keeps the written significant
+        digits, else to those digits (in mm as written: a library's bound, 'any length
+        above 328.182 mm', is not rounded below itself)."""
+        m, mm = FIGURE.fullmatch(text), float(written)
+        self.assertIsNotNone(m, text)
+        factor, unit = preferred(mm)
+        self.assertEqual(m.group(2), unit, (text, mm, App.Units.getSchema()))
+        n = len(re.sub(r"e.*|[^0-9]", "", written).lstrip("0"))
+        if unit == "mm":            # as written: not one digit lost
+            self.assertEqual(float(f"{float(m.group(1)):.{n}g}"), mm, (text, d))
+        fc = freecad_number(mm, d)
+        if float(f"{float(fc) * factor:.{n}g}") == mm:
+            self.assertEqual(m.group(1), fc, (text, mm, d))
+
     def test_marked_lengths_take_the_unit_freecad_picks_for_each(self):
         """Under every schema each exact mark and '<number> mm' mark is written in the unit
         getUserPreferred gives its value (MKS: 0.50 mm, 2.42 mm and 0.12 m in one message at
@@ -87,7 +103,7 @@ class UnitsPerValueTest(unittest.TestCase):
                 for mm in values:
                     with self.subTest(schema=schema, mm=mm, d=d):
                         self.assert_written(U.say(U.exact_mark(mm)), mm, d)
-                        self.assert_written(U.say(U.mm_marked(f"{mm:g} mm")), mm, d)
+                        self.assert_kept(U.say(U.mm_marked(f"{mm:g} mm")), f"{mm:g}", d)
                         self.assert_written(U.say(U.exact_mark(mm, 4)), mm, d)
                         self.assert_written(U.length_text(mm), mm, d)
 
@@ -96,7 +112,7 @@ class UnitsPerValueTest(unittest.TestCase):
         in the schema's unit beside the second's; coordinates named by the unit mark keep
         the schema's one unit."""
         App.Units.setSchema(1)
-        want = {2: ("lie 0.0091 to 0.16 m", "lie 9.05 to 16.00 mm", "at (0.22, -0.00050) m"),
+        want = {2: ("lie 0.00905 to 0.16 m", "lie 9.05 to 16.00 mm", "at (0.22, -0.00050) m"),
                 6: ("lie 0.00905000 to 0.160000 m", "lie 9.050000 to 16.000000 mm",
                     "at (0.219900, -0.000500000) m")}
         for d in self.at_decimals():

@@ -143,7 +143,7 @@ def blend_core(e0, at_end0, e1, at_end1, plane=None, mode="tension", value=0.0, 
                                    f"ends {length_mark(dist, 6)} apart: the solver covers "
                                    "tension times distance^2 up to "
                                    f"{e.HERMITE_SIGMA_D2_MAX:g}, here a tension of at most "
-                                   f"{per_area_mark(e.HERMITE_SIGMA_D2_MAX / dist ** 2, 4)}/{u}^2")
+                                   f"{per_area_mark(e.HERMITE_SIGMA_D2_MAX / dist ** 2, 4, 'down')}/{u}^2")
             sols = e.hermite(a0, t0, a1, t1, tension=value, tol=tol)
         else:
             if value == 0.0:                      # the free batten's own length
@@ -154,7 +154,7 @@ def blend_core(e0, at_end0, e1, at_end1, plane=None, mode="tension", value=0.0, 
             if value <= dist:
                 raise InputProblem(f"length {length_mark(value, 6)} is not longer than the "
                                    f"{length_mark(dist, 6)} between the ends: any length above "
-                                   f"{length_mark(dist, 6)} is possible")
+                                   f"{length_mark(dist, 6, 'up')} is possible")
             sols = e.hermite(a0, t0, a1, t1, length=value, tol=tol)
     except InputProblem:
         raise

@@ -181,7 +181,7 @@ def _step_advice(length):
     """What a resampling step of points whose polyline is length long must be below, and
     the way out."""
     return (f"the points' polyline is {exact_mark(length, 4)} long, so {MIN_POINTS} points need "
-            f"a step under {exact_mark(length / (MIN_POINTS - 1), 4)}; 0 fits the points as they "
+            f"a step under {exact_mark(length / (MIN_POINTS - 1), 4, bound='down')}; 0 fits the points as they "
             "are")
 
 
@@ -204,9 +204,9 @@ def _check_reach(xy, step, starts, default=None):
     if step > 0:
         zero = f", or 0 for {_default_step_name(default)}" if default <= reach else ""
         raise InputProblem(f"Resample = {exact_mark(step)} is {beyond}: set a step under "
-                           f"{exact_mark(reach, 4)}{zero}")
+                           f"{exact_mark(reach, 4, bound='down')}{zero}")
     raise InputProblem(f"Resample = 0 takes {_default_step_name(default)}, which is {beyond}: "
-                       f"set a step under {exact_mark(reach, 4)}")
+                       f"set a step under {exact_mark(reach, 4, bound='down')}")
 
 
 def _resampled(xy, step):
@@ -218,7 +218,7 @@ def _resampled(xy, step):
         raise InputProblem(f"Resample = {exact_mark(step)} would cut the points' "
                            f"{exact_mark(length, 4)} polyline into {length / step:.3g} segments, "
                            f"more than {most - 1}: use a step of at least "
-                           f"{exact_mark(length / (most - 1), 4)}, or 0 to fit the points as "
+                           f"{exact_mark(length / (most - 1), 4, bound='up')}, or 0 to fit the points as "
                            "they are")
     # the library's polygon (el.resampled_polygon): in the user's order, of the medians of
     # runs where the points' polyline is their noise's zigzag, ended at their end points

@@ -30,7 +30,7 @@ def decimals():
     return max(0, App.ParamGet(UNITS_PREFERENCES).GetInt("Decimals", default))
 
 
-def number_text(x, at_least=None):
+def number_text(x, at_least=None, bound=None):
     """A number as every panel text and box writes it (lengths in the unit the schema picks,
     curvatures, tensions, plain figures), as FreeCAD's Base::Quantity::getUserString writes a
     quantity: fixed notation, decimals() places ('151.00', '5.94'; '151.000000' at 6) where
@@ -41,16 +41,25 @@ def number_text(x, at_least=None):
     places as keep decimals() of them ('0.00063', '0.000039'); below 1e-6 in scientific
     notation ('2.7e-07', where FreeCAD's Imperial decimal schema turns to it). ``at_least``:
     as many significant digits at least, for a figure a text asks to type back (a tension
-    that gives a curve again: '0.00203109 1/mm\u00b2', not '0.0020')."""
+    that gives a curve again: '0.00203109 1/mm\u00b2', not '0.0020'). ``bound``: 'up' for
+    a figure a text says to stay above ('a step of at least'), rounded up at those places,
+    'down' for one to stay below ('a step under'), rounded down: a bound typed back as
+    written holds (to the nearest, 65.9511 mm under at 0 decimals was '66 mm'). A number
+    below 1 keeps 1 significant digit at least (Decimals 0: '0.4', not '0')."""
     d, x = decimals(), float(x)
-    keep = max(d, int(at_least or 0))
+    keep = max(d, 1, int(at_least or 0))
     if x == 0.0 or not math.isfinite(x):
         return f"{0.0 if x == 0.0 else x:.{d}f}"
     lead = math.floor(math.log10(abs(x)))
     if lead < -6:
+        if bound:
+            x = (ceil_digits if bound == "up" else floor_digits)(x, keep)
         return f"{x:.{max(0, keep - 1)}e}"
-    text = f"{x:.{max(d, keep - 1 - lead)}f}"
-    shown = max(d, d - 1 - lead)            # the places without at_least: a typed-back
+    places = max(d, keep - 1 - lead)
+    text = (f"{x:.{places}f}" if not bound else
+            format(Decimal(repr(x)).quantize(Decimal(1).scaleb(-places),
+                                             ROUND_CEILING if bound == "up" else ROUND_FLOOR), "f"))
+    shown = max(d, max(d, 1) - 1 - lead)    # the places without at_least: a typed-back
     while at_least and text.endswith("0") and \
             len(text.partition(".")[2]) > shown:        # figure's own zeros not written
         text = text[:-1]
@@ -67,13 +76,13 @@ def user_length(mm):
     return float(factor), unit
 
 
-def length_text(mm, digits=None):
+def length_text(mm, digits=None, bound=None):
     """A length (mm) as text in the user's schema, as FreeCAD's UserString writes it (the
     unit getUserPreferred picks, number_text: '151.00 mm', '5.94 in', '0.000039 in');
     ``digits``: the significant digits its stored marks name, of texts written before the
-    Decimals preference was followed (number_text decides)."""
+    Decimals preference was followed (number_text decides); ``bound``: number_text's."""
     factor, unit = user_length(mm)
-    return f"{number_text(float(mm) / factor)} {unit}"
+    return f"{number_text(float(mm) / factor, bound=bound)} {unit}"
 
 
 def noise(mm):
@@ -139,12 +148,13 @@ def tension_or_zero(sigma, length):
     return 0.0 if abs(sigma) * length ** 2 < TENSION_NOISE else float(sigma)
 
 
-def tension_text(sigma, length, digits=None):
+def tension_text(sigma, length, digits=None, bound=None):
     """sigma (1/mm^2) in 1/length^2 of the user's unit schema, as the Tension fields show it
     ('0.00063 1/mm\u00b2', '0.41 1/in\u00b2': number_text), to ``digits`` significant
-    digits at least (a tension to type back), rounding noise (tension_or_zero) shown as 0."""
+    digits at least (a tension to type back), rounding noise (tension_or_zero) shown as 0;
+    ``bound``: number_text's."""
     factor, unit = tension_unit()
-    return f"{number_text(tension_or_zero(sigma, length) * factor, digits)} {unit}"
+    return f"{number_text(tension_or_zero(sigma, length) * factor, digits, bound)} {unit}"
 
 
 def area_text(value, digits=None):
@@ -184,9 +194,21 @@ _NUM = r"(-?(?:\d+\.?\d*|\.\d+)(?:e[+-]?\d+)?)"
 _MM = re.compile(rf"(?<![\w.\-])(?:{_NUM} to )?{_NUM} mm(?![\w^\u00b2/])")   # '9.05 to 16 mm' too
 
 
-def length_mark(mm, digits=3):
-    """A length (mm) written by say() as length_text writes it."""
-    return f"\x01L{float(mm)!r}|{digits}\x02"
+def _bound_flag(bound):
+    """A mark's flag for number_text's ``bound`` ('up': a figure to stay above, rounded up;
+    'down': one to stay below, rounded down)."""
+    assert bound in (None, "up", "down"), bound
+    return f"|{bound}" if bound else ""
+
+
+def _bound_of(args):
+    """The bound flag among a mark's fields (_bound_flag), or None."""
+    return next((a for a in args[1:] if a in ("up", "down")), None)
+
+
+def length_mark(mm, digits=3, bound=None):
+    """A length (mm) written by say() as length_text writes it (``bound``: number_text's)."""
+    return f"\x01L{float(mm)!r}|{digits}{_bound_flag(bound)}\x02"
 
 
 def per_length_mark(value, digits=3, unit=True):
@@ -195,16 +217,18 @@ def per_length_mark(value, digits=3, unit=True):
     return f"\x01{'K' if unit else 'k'}{float(value)!r}|{digits}\x02"
 
 
-def tension_mark(sigma, length, digits=None):
+def tension_mark(sigma, length, digits=None, bound=None):
     """A tension (1/mm^2) written by say() as tension_text writes it (``digits``: at least
-    as many significant digits, a tension the text asks to type back)."""
-    return f"\x01T{float(sigma)!r}|{float(length)!r}|{'' if digits is None else int(digits)}\x02"
+    as many significant digits, a tension the text asks to type back; ``bound``:
+    number_text's)."""
+    shown = "" if digits is None else int(digits)
+    return f"\x01T{float(sigma)!r}|{float(length)!r}|{shown}{_bound_flag(bound)}\x02"
 
 
-def per_area_mark(value, digits=3):
+def per_area_mark(value, digits=3, bound=None):
     """A number per length squared (1/mm^2) written by say() in 1/unit^2 of the schema,
-    without its unit (tension_unit_mark says it)."""
-    return f"\x01N{float(value)!r}|{digits}\x02"
+    without its unit (tension_unit_mark says it; ``bound``: number_text's)."""
+    return f"\x01N{float(value)!r}|{digits}{_bound_flag(bound)}\x02"
 
 
 def length_unit_mark(written=False):
@@ -260,17 +284,18 @@ def coordinate_mark(mm, digits=4):
     return exact_mark(mm, digits, with_unit=False)
 
 
-def exact_mark(mm, digits=None, with_unit=True, figure=False):
+def exact_mark(mm, digits=None, with_unit=True, figure=False, bound=None):
     """A length (mm) written by say() from its exact value in the unit FreeCAD's schema picks
     for it (user_length: '0.496 mm', '0.1192 m' under MKS), to ``digits`` significant digits
     (None: as '%g' writes it in mm, at least 3 in another unit), in mm as
     f'{mm:.{digits}g} mm'; ``with_unit`` False: the number alone, in the schema's length
     unit (a message names it once), or a range's ('9.05 to 16 mm': the unit of its end);
     ``figure``: a measured length, whose rounding noise say(figures=True) writes as 0
-    (figure_text).
+    (figure_text); ``bound``: number_text's (a step 'of at least' / 'under' it).
     The binding's summaries take it as their ``length`` formatter."""
     shown = "" if digits is None else int(digits)
-    return f"\x01{'E' if with_unit else 'e'}{float(mm)!r}|{shown}{'|f' if figure else ''}\x02"
+    return (f"\x01{'E' if with_unit else 'e'}{float(mm)!r}|{shown}{'|f' if figure else ''}"
+            f"{_bound_flag(bound)}\x02")
 
 
 def figure_mark(mm, digits=None, with_unit=True):
@@ -280,10 +305,21 @@ def figure_mark(mm, digits=None, with_unit=True):
     return exact_mark(mm, digits, with_unit, figure=True)
 
 
-def _written_in(value, written, digits, shown):
+def _written_in(value, written, digits, shown, bound=None):
     """``value`` (mm) as a number in ``shown`` = (factor, unit), number_text's decimals
-    (``written``, its text in mm, and ``digits``: the marks' own, of texts stored before)."""
-    return number_text(value / shown[0])
+    (``digits``: the marks' own, of texts stored before; ``bound``: number_text's);
+    ``written``: its text in mm where a message wrote it (a '<number> mm' mark), written
+    with its significant digits where the decimals' text, read back in mm to those digits,
+    is not it: the library rounds its figures to their safe side ('raise tol to 0.00123 mm
+    or more', bspline.at_least; 'any length above 328.182 mm'), which Decimals 2 wrote
+    '0.0012 mm' and '328.18 mm', below the bound they name."""
+    text = number_text(value / shown[0], bound=bound)
+    if written is None:
+        return text
+    n = len(re.sub(r"e.*|[^0-9]", "", written).lstrip("0"))
+    if float(f"{float(text) * shown[0]:.{n}g}") == float(f"{value:.{n}g}"):
+        return text
+    return number_text(value / shown[0], n, bound)
 
 
 def _exact(args, with_unit, shown=None, figures=False):
@@ -292,10 +328,11 @@ def _exact(args, with_unit, shown=None, figures=False):
     range's unit) or the schema's length unit (a message names it once); ``figures``: a
     measured length (figure_mark) at rounding noise as 0."""
     value, digits = float(args[0]), args[1]
-    if figures and args[2:] == ["f"] and noise(value):
+    if figures and "f" in args[2:] and noise(value):
         value = 0.0
     shown = shown or (user_length(value) if with_unit else length_unit())
-    return _written_in(value, f"{value:g}", digits, shown) + (f" {shown[1]}" if with_unit else "")
+    return (_written_in(value, None, digits, shown, _bound_of(args))
+            + (f" {shown[1]}" if with_unit else ""))
 
 
 def _in_length_unit(written, with_unit=True, shown=None):
@@ -320,15 +357,16 @@ def _range(match, figures=False):
 def _said(match, figures=False):
     kind, args = match.group(1), match.group(2).split("|")
     if kind == "L":
-        return length_text(float(args[0]))
+        return length_text(float(args[0]), bound=_bound_of(args))
     if kind == "K":
         return per_length(float(args[0]))
     if kind == "k":
         return number_text(float(args[0]) * length_unit()[0])
     if kind == "T":
-        return tension_text(float(args[0]), float(args[1]), int(args[2]) if args[2] else None)
+        return tension_text(float(args[0]), float(args[1]), int(args[2]) if args[2] else None,
+                            _bound_of(args))
     if kind == "N":
-        return number_text(float(args[0]) * tension_unit()[0])
+        return number_text(float(args[0]) * tension_unit()[0], bound=_bound_of(args))
     if kind == "u":
         return length_unit()[1]
     if kind == "w":
