@@ -200,8 +200,8 @@ static int solve_start(fit_run_state *R, size_t ci, fit_trial *tr, double *x0, i
  * itself gives way to a higher one that does not, keep_the_better), for a guess or a further
  * start (not the G1 family's members nor the conjugate starts: their rules read the run's
  * end), unless the caller asks for every run to its end (el_fit_options.exhaustive). A run so
- * stopped ends above the kept fit: it is not kept, and it counts as no run to max_iter
- * (stop_rule). Measured on sine-like scans of 200-400 noisy points held G1 at both ends
+ * stopped ends above the kept fit (at the stop: the rate test is a forecast, not a proof):
+ * it is not kept, and it counts as a run to max_iter (el__fit_ran_out, stop_rule). Measured on sine-like scans of 200-400 noisy points held G1 at both ends
  * (2-3 inflections, the data no elastica: the held fit 3-5 x the free one's rms): the later
  * guesses took 1300-3100 iterations each (Levenberg-Marquardt's stages and Ipopt's), 0.4-1.5
  * s, to fits 17-40 x the kept one's objective. */
