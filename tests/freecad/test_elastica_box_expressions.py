@@ -89,6 +89,16 @@ class BoxExpressionsTest(unittest.TestCase):
         _pause(self.box)
         self.assertEqual(paused[-1], ("12 kg", 20.0))
 
+    def test_enter_or_focus_out_ends_the_typing_pause(self):
+        paused = []
+        self.box.paused.connect(lambda: paused.append(self.box.text()))
+        _type(self.box, "4 mm")
+        self.box.editingFinished.emit()               # Enter or Tab: '4 mm' stands now
+        self.assertEqual(self.box.settled, 4.0)
+        self.assertFalse(self.box.pause.isActive())   # nothing left to wait for
+        _pause(self.box)
+        self.assertEqual(paused, [])
+
     def test_equals_opens_the_expression_editor_and_is_not_typed(self):
         opened = []
         self.box.open_editor = lambda: opened.append(True)

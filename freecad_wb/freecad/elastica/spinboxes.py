@@ -146,6 +146,7 @@ class NumberBox(Bindable, QtGui.QDoubleSpinBox):
         self.pause.setInterval(TYPING_MS)
         self.pause.timeout.connect(self._paused)
         self.lineEdit().textEdited.connect(lambda _text: self.pause.start())
+        self.editingFinished.connect(self.pause.stop)   # Enter / focus-out settled it now
 
     def shown(self, value):
         """(factor, unit): the box shows ``value`` as value / factor unit."""
