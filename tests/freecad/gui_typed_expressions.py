@@ -156,10 +156,11 @@ def _paused_checks(panel, box, prop, label, stood, texts):
             line = G.error_line(panel)
             value = getattr(obj, prop).Value
             G.check(box.text() == text and value == stood and watch.count == 0
-                    and line.startswith(f"{label}: {text}"),
+                    and line.startswith(f"{label}: {text}") and "Touched" not in obj.State,
                     f"F11: {text!r} left in {label} through the typing pause: the feature keeps "
-                    f"the {stood} mm typed last, no recompute, the error line says why "
-                    f"({value}, {watch.count} recomputes, {line!r})")
+                    f"the {stood} mm typed last, no recompute, not left touched (OK solved it "
+                    f"again), the error line says why "
+                    f"({value}, {watch.count} recomputes, {obj.State}, {line!r})")
     finally:
         App.removeDocumentObserver(watch)
 

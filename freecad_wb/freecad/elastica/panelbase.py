@@ -86,6 +86,7 @@ class Panel(ExpressionFields):
         self.obj = obj
         self.opened_with = edit_state(obj)      # OK records what the edit changed
         self.previewed = self.opened_with       # what the feature shows was solved from
+        self.previewed_touched = True           # (not known before its first preview)
         # why the command chose what it did (warning line): given by the command, or saved
         # with the feature while its values hold (proxy.save_note)
         self._note, self._note_for = note or saved_note(obj), note_values(obj)
@@ -481,6 +482,7 @@ class Panel(ExpressionFields):
         except Exception as exc:  # never let a preview escape
             App.Console.PrintError(f"Elastica: {exc}\n")
         self.previewed = edit_state(o)      # (panelexpressions.hold_back)
+        self.previewed_touched = "Touched" in o.State
         self.refresh()
         self.refit()
 

@@ -49,6 +49,8 @@ class ExpressionFields:
             self.set(prop, float(box.settled))
             if self.timer.isActive() and edit_state(self.obj) == self.previewed:
                 self.timer.stop()
+                if not self.previewed_touched:      # as its preview left it: OK's
+                    self.obj.purgeTouched()         # recompute need not solve it again
 
     def edit_expression(self, box, prop):
         """FreeCAD's expression editor (Gui::Dialog::DlgExpressionInput) on ``prop``, as the
