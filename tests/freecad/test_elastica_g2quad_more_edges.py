@@ -75,3 +75,28 @@ class G2QuadMoreEdgesTest(S.DocTest):
         """It said 'Select one open edge or sketch curve' though closed ones are taken."""
         self.assertNotIn("open edge", C.G2QuadCommand.needs)
         self.assertIn("closed", C.G2QuadCommand.needs)
+
+    def test_the_count_is_searched_once_and_one_undo_removes_it(self):
+        """The command's check found the count (a search of up to cover_search_limit builds,
+        2-4 s on the oval): the feature's first recompute takes that outcome, the error,
+        instead of searching again; the feature made in error is one Undo step."""
+        sk = jittered_oval(self.doc)
+        s = SP.make(self.doc, [(sk, [])], Closed=True)
+        self.doc.recompute()
+        self.doc.UndoMode = 1
+        calls, search = [], Q._more_edges
+
+        def counted(*args):
+            calls.append(args[3])
+            return search(*args)
+        Q._more_edges = counted
+        try:
+            q = C.g2quad_sources([(s, [])], open_panel=False, wrong=lambda *a: None)
+        finally:
+            Q._more_edges = search
+        self.assertEqual(calls, [24])
+        self.assertRegex(q.Status, r"^error: .*Edges = \d+ builds it$")
+        name = q.Name
+        self.assertEqual(self.doc.UndoNames[0], "G2 quadratic B-spline")
+        self.doc.undo()
+        self.assertNotIn(name, [o.Name for o in self.doc.Objects])

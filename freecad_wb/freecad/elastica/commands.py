@@ -542,13 +542,12 @@ def g2quad_sources(sources, open_panel=True, wrong=message, **options):
 
     def check():
         edges, plane = src_mod.gather_edges(sources, element=element_as_followed)
-        try:
-            checked.append(checked_call(g2quad.g2quad_core, edges, plane, opts["Edges"]))
-        except g2quad.EdgesProblem:
-            # another Edges builds it: the feature made all the same, in error (its Status
-            # names the count), with its panel's Edges box to type it in, as FreeCAD's own
-            # features are (QA gui F2: refused in a box whose advice had nowhere to go)
-            pass
+        # EdgesProblem (another Edges builds it): the feature made all the same, in error (its
+        # Status names the count), with its panel's Edges box to type it in, as FreeCAD's own
+        # features are (QA gui F2: refused in a box whose advice had nowhere to go); its first
+        # recompute raises the check's error again (kept.Raised), not the search once more
+        checked.append(checked_call(g2quad.g2quad_core, edges, plane, opts["Edges"],
+                                    raises=g2quad.EdgesProblem))
 
     return _check_and_create(
         "G2 quadratic B-spline", "G2 quadratic B-spline", check,

@@ -167,15 +167,28 @@ def call_key(core, *args, **kwargs):
             tuple((k, _comparable(v)) for k, v in bound.arguments.items()))
 
 
-def checked_call(core, *args, **kwargs):
+class Raised:
+    """A check's outcome that is an exception of checked_call's ``raises``: the feature's
+    first recompute (FeatureProxy.handed) raises it again instead of computing it."""
+
+    def __init__(self, exc):
+        self.exc = exc
+
+
+def checked_call(core, *args, raises=(), **kwargs):
     """A command's check: ``(call_key, core(*args, **kwargs))``, handed to the feature it
     creates (FeatureProxy.handed) so that its first recompute, making the same call, takes
-    the outcome instead of computing it again."""
+    the outcome instead of computing it again. An exception of ``raises`` is the outcome
+    too (Raised): the feature is made and fails with it (the G2 quadratic's EdgesProblem,
+    whose count search took 2-4 s, not run twice)."""
     try:
         key = call_key(core, *args, **kwargs)
     except TypeError:           # an argument _comparable cannot key: no hand, the feature computes
         key = None
-    return key, core(*args, **kwargs)
+    try:
+        return key, core(*args, **kwargs)
+    except raises as exc:
+        return key, Raised(exc)
 
 
-__all__ = ["input_key", "is_input", "NOT_INPUT", "call_key", "checked_call"]
+__all__ = ["input_key", "is_input", "NOT_INPUT", "call_key", "checked_call", "Raised"]

@@ -19,7 +19,7 @@ import FreeCAD as App
 
 from .containers import (add_containers, follow_containers, holder_placement, link_properties,
                          keep_in_place, moved_holder, remember_holder, restore_containers)
-from .kept import call_key, input_key, is_input
+from .kept import Raised, call_key, input_key, is_input
 from .units import exact_mark, mm_marked, per_area_mark, say, tension_unit_mark
 
 VERSION = 5             # of the proxies' saved state (3: lengths typed with units;
@@ -521,6 +521,8 @@ class FeatureProxy:
             except TypeError:       # no key for an argument (kept._comparable): computed
                 same = False
             if same:
+                if isinstance(checked[1], Raised):   # the check's exception, raised again
+                    raise checked[1].exc
                 return checked[1]
         return core(*args, **kwargs)
 
