@@ -21,8 +21,8 @@ def jittered_oval(doc, noise=0.3):
     th = np.sort(rng.uniform(0, 2 * np.pi, 24))
     sk = doc.addObject("Sketcher::SketchObject", "Outline")
     for t in th:
-        x = 1500 + 150 * math.cos(t) + rng.normal(0, 0.3) * (noise > 0)
-        y = -800 + 90 * math.sin(t) + rng.normal(0, 0.3) * (noise > 0)
+        x = 1500 + 150 * math.cos(t) + rng.normal(0, noise)
+        y = -800 + 90 * math.sin(t) + rng.normal(0, noise)
         sk.addGeometry(Part.Point(App.Vector(float(x), float(y), 0)), False)
     doc.recompute()
     return sk
