@@ -60,6 +60,10 @@ CORNER_SAMPLES = 2000
 # of a sine-like S, point 17 moved 9 mm: rms 2.76, 2.51 without it, 10.3 x the noise either
 # way; said "a corner, or curves of more than one piece" of a shape with no corner).
 STRAY_MOST = 3
+# ... among at most STRAY_SEARCH_POINTS points: beyond, far_points (20 points on) names points
+# dragged off, and the refits cost (a 1000-point S scan, no corner: 3 smooth refits 275 ms of
+# misfit's 623 ms, a third of its el.fit; revH).
+STRAY_SEARCH_POINTS = 200
 
 
 class MisfitWarning(RuntimeWarning):
@@ -442,7 +446,8 @@ def _verdict(fig: _Figures, d: np.ndarray, rms_all: float, corner: bool = True,
     if not (rms > MISFIT_RATIO * noise and rms > MISFIT_FLOOR * extent):
         return None
     at, parts = _corner(pts, noise) if corner else (-1, None)
-    far = _strays(pts, d, noise) if corner and strays and at < 0 else ((), None)
+    search = corner and strays and at < 0 and len(pts) <= STRAY_SEARCH_POINTS
+    far = _strays(pts, d, noise) if search else ((), None)
     return Misfit(rms, noise, rms / noise if noise > 0 else np.inf, at, parts, far[0],
                   tuple(float(abs(d[i])) for i in far[0]), far[1])
 

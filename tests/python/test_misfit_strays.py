@@ -97,3 +97,22 @@ def test_innocent_farthest_points_of_a_fit_pulled_to_dragged_ones_are_not_named_
     assert m is not None and m.corner == -1 and m.strays
     assert not m.strays_account or set(m.strays) <= {8, 9}
     assert "Dragged off" not in el.misfit_summary(m, P) or set(m.strays) <= {8, 9}
+
+
+def test_a_long_scan_refits_no_strays(monkeypatch):
+    # above STRAY_SEARCH_POINTS points no farthest point is left out and refitted (far_points
+    # names the dragged-off ones there; the refits cost a third of a 1000-point fit)
+    import importlib
+    M = importlib.import_module("libelastica.misfit")
+    rng = np.random.default_rng(3)
+    s = np.sort(rng.uniform(0, 1, M.STRAY_SEARCH_POINTS + 1))
+    P = np.column_stack([400 * s, 80 * np.sin(2.2 * s * np.pi) + rng.normal(0, 0.3, s.size)])
+    r = _fit(P)
+    calls = []
+    monkeypatch.setattr(M, "_strays", lambda *a: calls.append(a) or ((), None))
+    m = el.misfit(P, r.distances)
+    assert m is not None and m.corner == -1 and m.strays == () and not calls
+    said = el.misfit_summary(m, P)
+    assert "no corner stands out;" in said and "a corner at" not in said
+    m = el.misfit(P[:M.STRAY_SEARCH_POINTS], r.distances[:M.STRAY_SEARCH_POINTS])
+    assert m is not None and len(calls) == (1 if m.corner == -1 else 0)
