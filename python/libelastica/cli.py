@@ -633,7 +633,12 @@ def build_parser() -> argparse.ArgumentParser:
                    help="fit one smooth elastica to the points first and build from it: "
                         "measured or rounded points (the construction takes their second and "
                         "third differences)")
-    q.add_argument("--json", metavar="PATH", help="write the result as JSON" + _TO_STDOUT)
+    q.add_argument("--json", metavar="PATH",
+                   help="write the result as JSON (end_tangent_error_rad: the source's ends' "
+                        "tangent error, what the report's 'end tangents' line prints; "
+                        "piece_end_tangent_error_rad: every piece end's, the inflections' "
+                        "included; deviation: the largest distance from the source)"
+                        + _TO_STDOUT)
     q.add_argument("--svg", metavar="PATH", help="picture (SVG)" + _TO_STDOUT)
     q.add_argument("--png", metavar="PATH", help="picture (PNG, matplotlib)" + _PNG_TO_STDOUT)
     q.add_argument("--dxf", metavar="PATH",

@@ -69,3 +69,13 @@ def test_one_piece_prints_no_inflection_line(capsys, tmp_path):
     assert "tangents at the inflections" not in out
     assert _figure(out, "end tangents off the source's") == \
         float(f"{np.degrees(doc['source_end_tangent_error_rad']):.3g}")
+
+
+def test_help_says_what_the_json_tangent_keys_hold(capsys):
+    """end_tangent_error_rad changed meaning (QA qapy F5): the --json help names both keys."""
+    import pytest
+    with pytest.raises(SystemExit):
+        el.cli.main(["g2quad", "--help"])
+    out = " ".join(capsys.readouterr().out.split())
+    assert "end_tangent_error_rad: the source's ends'" in out
+    assert "piece_end_tangent_error_rad" in out
