@@ -23,15 +23,16 @@ __all__ = ["SPARSE_POINTS", "SPARSE_RATIO", "SPARSE_FLOOR", "SparseWarning", "cu
 # with 25 or more none of 191). Below SPARSE_POINTS the smooth fit is run to compare (a
 # smooth fit of so few points takes milliseconds); it fits far better when its rms is
 # below 1 / SPARSE_RATIO of the discrete one's, by more than SPARSE_FLOOR of the extent.
-# Were 25 and 2.0 (QA qapy F2: a 30-point uneven ship line, 9000 mm, whose exported cubic
-# lies 2.50 / 5.18 mm (rms / max) from the points, the smooth curve 1.49 / 2.35, and at 24
-# points 2.79 / 5.83 against 1.54 / 2.36: a ratio of 1.8, no warning). Measured
-# (/tmp/fxpy/sweep2.py: 240 sets of bench_fit_sparse.py's kind with 8-40 points, free
-# ends): the exported curve's rms over the smooth one's is 1.01 at the median of 25-40
-# points, 1.22 at the 90th percentile, 1.68 at the 95th, 2.58 at most; at 1.5 the warning
-# fires for 25 of 46 sets of 8-14 points (18 at 2.0), 8 of 75 of 15-24 (5), 7 of 119 of
-# 25-40 (0), and for the ship line at 12, 16, 20, 24 and 30 points.
-SPARSE_POINTS = 40
+# SPARSE_RATIO was 2.0 (QA qapy F2: a 30-point uneven ship line, 9000 mm, whose exported
+# cubic lies 2.50 / 5.18 mm (rms / max) from the points, the smooth curve 1.49 / 2.35, and at
+# 24 points 2.79 / 5.83 against 1.54 / 2.36: a ratio of 1.8, no warning). Measured
+# (/tmp/fxpy/sweep2.py: 240 sets of bench_fit_sparse.py's kind with 8-40 points, free ends):
+# at 1.5 the warning fires for 25 of 46 sets of 8-14 points (18 at 2.0), 8 of 75 of 15-24 (5),
+# and for the ship line at 12 to 24 points. SPARSE_POINTS stays 25: at 40 (fxpy's first rule)
+# every discrete fit of 25-39 points ran a smooth fit too, 5-6 ms against its own 0.5 (make
+# bench's free sparse sketches, discrete median 0.7 -> 6.7 ms), to warn 7 of 119 such sets
+# (the 30-point ship line among them), whose rms over the smooth one's is 1.01 at the median.
+SPARSE_POINTS = 25
 SPARSE_RATIO = 1.5
 SPARSE_FLOOR = 1e-4
 
