@@ -98,7 +98,7 @@ class BlendLoopFollowTest(S.DocTest):
         self.assertEqual(self.b.Status, "solution 2 of 4")
         self.assertAlmostEqual(self.shown_turn(), -5.383, delta=1e-3)
         self.assertEqual(self.b.Loops[1], 0)
-        self.assertIn("0 loops, turns 308\u00b0 clockwise,", self.b.Descriptions[1])
+        self.assertIn("0 loops, turns 308.40\u00b0 clockwise,", self.b.Descriptions[1])
 
     def shown_turn(self):
         return Bl.total_turn(self.b.Proxy.plane_curves(self.b)[0])
