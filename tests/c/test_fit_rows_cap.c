@@ -50,7 +50,7 @@ static void sine_scan(held_data *D)
  * (deterministic); the curve's own end conditions. */
 static void elastica_scan(held_data *D, const el_smooth_params *c, size_t n, double amp)
 {
-    double s[NSCAN], th[2], ka[2], e[4];
+    double s[NSCAN] = {0.0}, th[2], ka[2], e[4];   /* (zeroed: gcc -O1 -fsanitize read n = 0 as possible) */
     D->n = n;
     for (size_t i = 0; i < n; i++) s[i] = c->length * pow((double)i / (double)(n - 1), 1.3);
     ck_assert_int_eq(el_smooth_eval(c, n, s, D->xy, NULL, NULL), EL_OK);
