@@ -154,17 +154,24 @@ static void all_kinds(const held_data *D, const char *data, int sparse)
         }
 }
 
-START_TEST(test_sine_scan)
+/* all_kinds of the data D0 at its scale and at 1e-6 and 1e6 of it. */
+static void all_kinds_scaled(const held_data *D0, const char *name, int sparse)
 {
     static const double scales[] = {1.0, 1e-6, 1e6};
     for (int a = 0; a < 3; a++) {
-        held_data D;
-        sine_scan(&D);
+        held_data D = *D0;
         scaled(&D, scales[a]);
         char what[48];
-        snprintf(what, sizeof what, "sine scan x %g", scales[a]);
-        all_kinds(&D, what, 0);
+        snprintf(what, sizeof what, "%s x %g", name, scales[a]);
+        all_kinds(&D, what, sparse);
     }
+}
+
+START_TEST(test_sine_scan)
+{
+    held_data D;
+    sine_scan(&D);
+    all_kinds_scaled(&D, "sine scan", 0);
 }
 END_TEST
 
@@ -199,32 +206,20 @@ END_TEST
 
 START_TEST(test_elastica_scan)
 {
-    static const double scales[] = {1.0, 1e-6, 1e6};
     const double L = 100.0, w = 5.0 * 1.995 / L;       /* k 0.8: K(0.8) = 1.995, 2.5 waves */
     const el_smooth_params c = {0.0, 0.0, 0.3, w * w, 0.8, -0.4, L};
-    for (int a = 0; a < 3; a++) {
-        held_data D;
-        elastica_scan(&D, &c, NSCAN, 0.4);
-        scaled(&D, scales[a]);
-        char what[48];
-        snprintf(what, sizeof what, "elastica scan x %g", scales[a]);
-        all_kinds(&D, what, 0);
-    }
+    held_data D;
+    elastica_scan(&D, &c, NSCAN, 0.4);
+    all_kinds_scaled(&D, "elastica scan", 0);
 }
 END_TEST
 
 START_TEST(test_sparse_sketch)
 {
-    static const double scales[] = {1.0, 1e-6, 1e6};
     const el_smooth_params c = {1.0, -2.0, -0.7, 4.0, 1.3, 0.2, 1.0};     /* k 1.3: no inflection */
-    for (int a = 0; a < 3; a++) {
-        held_data D;
-        elastica_scan(&D, &c, NSKETCH, 0.004);
-        scaled(&D, scales[a]);
-        char what[48];
-        snprintf(what, sizeof what, "sparse sketch x %g", scales[a]);
-        all_kinds(&D, what, 1);
-    }
+    held_data D;
+    elastica_scan(&D, &c, NSKETCH, 0.004);
+    all_kinds_scaled(&D, "sparse sketch", 1);
 }
 END_TEST
 
