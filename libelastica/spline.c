@@ -381,6 +381,32 @@ static int stable_instead(el__spchain *w, const double *xy, size_t n, const el_s
     return EL_OK;
 }
 
+/*
+ * UNITS: the spline works in units of the mean chord S (lengths / S, sigma S^2, kappa S);
+ * what those units cannot represent is refused before any search (EL_EDOM): S outside
+ * [1e-150, 1e150] (as el_fit's extent, prep.c, and el_affine_polyline's edges), and a
+ * tension sigma S^2 or a G2 end's curvature |kappa| S above UNITS_MAX. Why 1e150: the
+ * pieces' equations carry the squares of these (mu = (kappa_m^2 - sigma) / 4 in the
+ * internal units, the force |F| = kappa_m^2 - sigma, sigma h^2 in the pieces' starts,
+ * the energy's integral kappa^2), so at 1e150 they stay within 1e300 < DBL_MAX, and
+ * S^2 and 1 / S^2 (the result's forces and tension back in user units) do too. Such a
+ * batten is no batten (a bend of 1e150 radians per chord): the searches only spent the
+ * call's budget on it (the fuzz's 36 collinear ducks with a G2 end of curvature 1.8e308
+ * x the chord: 1 s for EL_ERANGE; 14 ducks at 1e300 with sigma 42.3, sigma S^2
+ * overflowing: 0.7 s for EL_ENOCONV). Closed splines have no ends to check.
+ */
+#define UNITS_MAX 1e150
+static int outside_units(const el_spline_options *opt, double S)
+{
+    if (!(S >= 1.0 / UNITS_MAX && S <= UNITS_MAX)) return 1;
+    if (opt->mode == EL_SPLINE_TENSION && !(opt->sigma * S * S <= UNITS_MAX)) return 1;
+    if (opt->closed) return 0;
+    const el_spline_end *e[2] = {&opt->start, &opt->end};
+    for (int i = 0; i < 2; i++)
+        if (e[i]->kind == EL_SPLINE_G2 && !(fabs(e[i]->curvature) * S <= UNITS_MAX)) return 1;
+    return 0;
+}
+
 /* el__spline_solve_paths, with the longest span h (user units) into *longest once the
  * chords are valid (el__spline_largest's h) */
 static int solve_paths(const double *xy, size_t n, const el_spline_options *opt, int newton_first,
@@ -409,6 +435,7 @@ static int solve_paths(const double *xy, size_t n, const el_spline_options *opt,
     if (!isfinite(Lp)) return EL_EINVAL;
     const int lmode = opt->mode == EL_SPLINE_LENGTH;
     if (lmode && opt->length < Lp * (1.0 - 1e-14)) return EL_EDOM;
+    if (outside_units(opt, Lp / (double)m)) return EL_EDOM;
 
     el__spchain w, g;
     memset(&g, 0, sizeof g);

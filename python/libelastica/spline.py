@@ -17,7 +17,7 @@ from ._ffi import (DomainError, ElasticaError, LengthRangeError, NotConvergedErr
 from ._values import ValueEquality
 from .bspline import smooth_chain_to_bspline
 from .core import SMOOTH_PARAMS, SmoothElastica, arc_lengths, chain_eval, chain_starts
-from .spline_ends import _end, _g2_end_text
+from .spline_ends import _end, _g2_end_text, _units_problem
 
 __all__ = ["DoublesBackError", "ElasticSpline", "LoopWarning", "SeamWarning", "UnstableWarning",
            "holding_tension",
@@ -619,6 +619,9 @@ def elastic_spline(points, tension: Optional[float] = None, length: Optional[flo
             for k in SMOOTH_PARAMS:
                 setattr(arr[i], k, float(getattr(p, k)))
         opt.initial, opt.ninitial = arr, len(pieces)
+    units = _units_problem(float(chords.sum()) / len(chords), opt, closed)
+    if units:   # el_spline_solve's EL_EDOM before any search (spline.c's UNITS)
+        raise DomainError(lib.EL_EDOM, "elastic_spline: " + units)
     places = back_steps(pts, closed)
     if len(places) >= BACK_STEPS_MANY:   # noise: refused before a solve that cannot succeed
         err = DoublesBackError(lib.EL_EDOM, (

@@ -1,5 +1,6 @@
 """The ends of an elastic spline (elastic_spline's start / end): their conditions filled in
-(natural, clamped, G2) and what is said of G2 ends where no spline is reached."""
+(natural, clamped, G2) and what is said of G2 ends where no spline is reached; the units
+the solver works in (the mean chord), which a tension or a G2 end's curvature must fit."""
 from __future__ import annotations
 
 import numpy as np
@@ -52,3 +53,24 @@ def _g2_end_text(opt, chords) -> str:
         return ""
     return ("; " + " and ".join(said) + " may be what no spline through the points meets: "
             "try the same tangent alone (clamped) or a smaller curvature")
+
+
+# el_spline_solve's units (spline.c's UNITS): the mean chord S in [1e-150, 1e150], sigma S^2
+# and a G2 end's |curvature| S at most 1e150
+UNITS_MAX = 1e150
+
+
+def _units_problem(S, opt, closed):
+    """What of the mean chord S and the options opt (el_spline_options) the spline's units
+    cannot represent (EL_EDOM before any search), as text; None where all is within."""
+    if not 1.0 / UNITS_MAX <= S <= UNITS_MAX:
+        return (f"the points' mean chord {S:.4g} is outside [1e-150, 1e150], the scales the "
+                "solver represents: scale the points (and tension, curvatures) first")
+    if opt.mode == lib.EL_SPLINE_TENSION and not opt.sigma * S * S <= UNITS_MAX:
+        return (f"tension {opt.sigma:.4g} x (mean chord {S:.4g})^2 exceeds 1e150: no batten "
+                "the solver represents is pulled so hard")
+    for name, e in (() if closed else (("start", opt.start), ("end", opt.end))):
+        if e.kind == lib.EL_SPLINE_G2 and not abs(e.curvature) * S <= UNITS_MAX:
+            return (f"the {name} curvature {e.curvature:.4g} x (mean chord {S:.4g}) exceeds "
+                    "1e150: no batten the solver represents bends so sharply")
+    return None

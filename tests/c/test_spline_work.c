@@ -24,10 +24,12 @@ static unsigned long call_budget(const el_spline_options *o, size_t n)
 /* The fuzz driver's slow input (fuzz/corpus/fuzz-spline-solve-length-g2-collinear-slow.bin, 1.00 s
  * of CPU in make check's fuzz stage at eb4b739, two solves of it per input): 36 collinear
  * points (t, 2t), G2 ends (the end's curvature DBL_MAX), by length 15.458 = 6.9 x the polygon,
- * max_steps 15, max_iter 37. No spline reaches that length: el__spline_solve_length's four paths
- * fail, then spline_bracket.c's ladder and the four paths again from each way of its bracket:
- * 6468 chain evaluations (0.35 s) to say EL_ERANGE, within the call's budget
- * 15 x 37 x (16 + 64 / 35) = 9894 (cee94bf's 8 x 15 x 37 for each solve stopped it at 4543). */
+ * max_steps 15, max_iter 37. That curvature times the mean chord is no batten's (spline.c's
+ * UNITS): EL_EDOM before any search, no work. With an end curvature of 1 no spline reaches
+ * that length either: el__spline_solve_length's four paths fail, then spline_bracket.c's ladder
+ * and the four paths again from each way of its bracket: 9158 chain evaluations (0.7 s) to say
+ * EL_ERANGE, within the call's budget 15 x 37 x (16 + 64 / 35) = 9894 (cee94bf's 8 x 15 x 37
+ * for each solve stopped it at 4543). */
 START_TEST(length_search_within_the_call_budget)
 {
     double xy[72];
@@ -51,6 +53,9 @@ START_TEST(length_search_within_the_call_budget)
     o.max_iter = 37;
     o.max_steps = 15;
     el_spline_result r;
+    ck_assert_int_eq(el_spline_solve(xy, 36, &o, &r), EL_EDOM);
+    ck_assert(r.work == 0 && r.npieces == 0);
+    o.end.curvature = 1.0;
     const int st = el_spline_solve(xy, 36, &o, &r);
     const unsigned long budget = call_budget(&o, 36);
     ck_assert_msg(r.work <= budget, "work %lu, budget %lu", r.work, budget);
@@ -138,10 +143,11 @@ END_TEST
 
 /* The fuzz's slow el_spline_to_bspline input (fuzz/corpus/fuzz-spline-to-bspline-g2-huge-slow.bin,
  * 7.4 s of CPU at full speed): 14 collinear points (t, 2t) x 1e300, G2 ends, tension 42.3.
- * The solve fails (EL_ENOCONV); sigma x (longest span)^2 is inf, so the largest tension was
+ * The solve failed (EL_ENOCONV); sigma x (longest span)^2 is inf, so the largest tension was
  * looked for, but every rung's tension sigma h^2 / h^2 (h^2 inf) is 0: ten identical solves
- * at sigma 0, each with its own budget. Now none is made (its rungs are no tensions), and
- * the result says the whole call's work. */
+ * at sigma 0, each with its own budget. el__spline_largest makes none (its rungs are no
+ * tensions); the solve is now refused before any search (spline.c's UNITS: the mean chord
+ * 1.7e299 > 1e150): EL_EDOM, no work (it spent 0.7 s to say EL_ENOCONV). */
 START_TEST(largest_makes_no_solve_where_its_rungs_are_no_tensions)
 {
     double xy[28];
@@ -169,11 +175,65 @@ START_TEST(largest_makes_no_solve_where_its_rungs_are_no_tensions)
     ck_assert_int_eq(work.evals, 0);
     ck_assert(largest[0] == 0.0 && largest[1] == 0.0 && largest[2] == 0.0);
     el_spline_result r, r1;
-    ck_assert_int_eq(el_spline_solve(xy, 14, &o, &r), EL_ENOCONV);
-    ck_assert_int_eq(el__spline_solve_paths(xy, 14, &o, 1, &r1), EL_ENOCONV);
-    ck_assert_int_eq(r.work, r1.work);   /* the one solve's: nothing more */
+    ck_assert_int_eq(el_spline_solve(xy, 14, &o, &r), EL_EDOM);
+    ck_assert_int_eq(el__spline_solve_paths(xy, 14, &o, 1, &r1), EL_EDOM);
+    ck_assert(r.work == 0 && r1.work == 0 && r.npieces == 0 && r1.npieces == 0);
     el_spline_result_free(&r);
     el_spline_result_free(&r1);
+}
+END_TEST
+
+/* spline.c's UNITS: the three points (0, 0), (s, 0), (s, s) (mean chord S = s), a G2 start
+ * of tangent (1, 0.2) and curvature kg where kg is finite. */
+static int units_solve(double s, double sigma, double kg, int lmode, el_spline_result *r)
+{
+    const double xy[6] = {0, 0, s, 0, s, s};
+    el_spline_options o;
+    el_spline_options_defaults(&o);
+    o.sigma = sigma;
+    if (lmode) {
+        o.mode = EL_SPLINE_LENGTH;
+        o.length = 2.2 * s;
+    }
+    if (isfinite(kg)) {
+        o.start.kind = EL_SPLINE_G2;
+        o.start.tangent[0] = 1.0;
+        o.start.tangent[1] = 0.2;
+        o.start.curvature = kg;
+    }
+    return el_spline_solve(xy, 3, &o, r);
+}
+
+/* What the spline's units (the mean chord S) cannot represent is refused before any search,
+ * EL_EDOM with no work: S outside [1e-150, 1e150], sigma S^2 or a G2 end's |kappa| S above
+ * 1e150 (finite but absurd: sigma 1e307, kappa 1e307). Before, each reached the searches
+ * (sigma S^2 = 1e307: 13992 evaluations for EL_ENOCONV; S just outside: solved with forces of
+ * 1e-300). Just inside the bounds each solves or fails as before (the statuses and work of
+ * e8b1b54): S = 1e150 and 1e-150 solve, by tension and by length; sigma S^2 = 1e150 and
+ * |kappa| S = 1e150 (at S = 1 and at S = 1e100) fail as they did, EL_ENOCONV. */
+START_TEST(units_outside_are_refused_before_any_search)
+{
+    const double no = NAN, out = 1.0000001;
+    const struct { double s, sigma, kg; int lmode, st; unsigned long work; } c[] = {
+        {1e150, 0, no, 0, EL_OK, 5},           {1e150 * out, 0, no, 0, EL_EDOM, 0},
+        {1e-150, 0, no, 0, EL_OK, 5},          {1e-150 / out, 0, no, 0, EL_EDOM, 0},
+        {1e150, 0, no, 1, EL_OK, 8},           {1e-150, 0, no, 1, EL_OK, 8},
+        {1e150 * out, 0, no, 1, EL_EDOM, 0},   {1e-150 / out, 0, no, 1, EL_EDOM, 0},
+        {1, 1e150, no, 0, EL_ENOCONV, 13992},  {1, 1e150 * out, no, 0, EL_EDOM, 0},
+        {1, 1e307, no, 0, EL_EDOM, 0},         {1e100, 1e-50 * out, no, 0, EL_EDOM, 0},
+        {1, 0, 1e150, 0, EL_ENOCONV, 12653},   {1, 0, -1e150 * out, 0, EL_EDOM, 0},
+        {1, 0, -1e150, 1, EL_ENOCONV, 468},    {1, 0, 1e150 * out, 1, EL_EDOM, 0},
+        {1, 0, 1e307, 1, EL_EDOM, 0},          {1e100, 0, 1e49, 0, EL_ENOCONV, 12653},
+        {1e100, 0, 1e50 * out, 0, EL_EDOM, 0},
+    };
+    for (size_t i = 0; i < sizeof c / sizeof c[0]; i++) {
+        el_spline_result r;
+        const int st = units_solve(c[i].s, c[i].sigma, c[i].kg, c[i].lmode, &r);
+        ck_assert_msg(st == c[i].st && r.work == c[i].work, "case %zu: status %d work %lu, expected %d, %lu", i, st,
+                      (unsigned long)r.work, c[i].st, c[i].work);
+        if (st == EL_EDOM) ck_assert(r.npieces == 0 && r.pieces == NULL);
+        el_spline_result_free(&r);
+    }
 }
 END_TEST
 
@@ -322,6 +382,7 @@ int main(void)
     tcase_add_test(tc, a_stopped_result_is_judged_on_its_own_pieces);
     tcase_add_test(tc, a_sliding_batten_says_its_work);
     tcase_add_test(tc, no_way_from_a_rung_begins_past_the_budget);
+    tcase_add_test(tc, units_outside_are_refused_before_any_search);
     suite_add_tcase(s, tc);
     return test_run_suite(s);
 }
