@@ -333,6 +333,8 @@ typedef struct el__spchain {
     int near;                /* the state is a solution to what the parametrisation resolves */
     int leap;                /* el__spline_follow_family: leap once over a stall (spline_path.c) */
     int jump;                /* el__spline_follow_family: refuse a step onto another branch (JUMP) */
+    int would_leap, would_jump; /* el__spline_follow_family without leap / jump: a step where the
+                                   rule would have acted was met (SAME_PATH, spline_path.c) */
     int neighbours;          /* el__spline_solve_tension: from fair nearby tensions (spline_path.c) */
     int plain;               /* el__spline_length_from: the plain follow only, no retries (spline.c's
                                 FREE_FAMILY comparison) */

@@ -181,14 +181,18 @@ int el__spline_follow_family(el__spchain *w, int max_steps, double Lt, int by_si
                     if (st) {
                 el__snap_load(w, C);
                 h *= 0.5;
-                if (w->leap && h < 1e-3 * hgood && !leapt) { leapt = 1; h = 4.0 * hgood; }
+                if (h < 1e-3 * hgood && !leapt) {
+                    if (w->leap) { leapt = 1; h = 4.0 * hgood; } else w->would_leap = 1;
+                }
                 continue;
             }
             hgood = fmax(hgood, h);
             leapt = 0;
             if (!by_sigma && note_reach(w)) return EL_ENOMEM;
             const double gn = family_gap(w, Lt, by_sigma);
-            if (w->jump && !by_sigma && h >= 0.75 * N && (gn - gc) * dLp < 0.0 && fabs(gn - gc) > fabs(dLp)) {
+            const int jumped = !by_sigma && h >= 0.75 * N && (gn - gc) * dLp < 0.0 && fabs(gn - gc) > fabs(dLp);
+            if (jumped && !w->jump) w->would_jump = 1;
+            if (jumped && w->jump) {
                 /* JUMP: the length moved against the secant's prediction by more than it
                  * predicted: the corrector landed on another branch of the pieces, not on
                  * the family. QA21's 40 ducks at 1.05 x their polygon: one step from sigma
@@ -657,8 +661,19 @@ int el__spline_length_from(el__spchain *w, int max_steps, double Lt)
     double *b2 = buf + n + 2 * EL__NV * m;
     el__spsnap leapt = {b2, b2 + n, b2 + n + EL__NV * m, 0.0};
     el__snap_save(w, &start);
+    w->would_leap = w->would_jump = 0;
+    const int stopped0 = w->work->stopped;
     int st = follow_length(w, max_steps, Lt);
     if (st == EL_ENOMEM) { free(buf); return st; }
+    /* SAME_PATH: the leap's and the jump's paths below start where this plain one did and
+     * take its steps until their rule acts; where this path met no step at which it would
+     * (w->would_leap, w->would_jump) and the call's budget did not end it, theirs are this
+     * path step for step (el__spline_follow_family is deterministic in its start), to the
+     * same failure: not run again. The 36 collinear ducks with G2 ends by length 6.9 x
+     * (test_spline_work): 8 of the 12 paths of the bracket's ways and 2 of the free batten's
+     * 4 were such copies */
+    const int same_leap = !w->would_leap && !(w->work->stopped && !stopped0);
+    const int same_jump = !w->would_jump && !(w->work->stopped && !stopped0);
     if (st == EL_ENOCONV && w->lmode && w->resid <= EL__SP_NEAR) w->near = 1;
     if (st == EL_ENOCONV && !w->near && !w->plain) {
         /* Newton stalls where a piece passes the separatrix (k^2 = 1, its parameters
@@ -667,13 +682,15 @@ int el__spline_length_from(el__spchain *w, int max_steps, double Lt)
          * pieces' states, smooth there. Only after a failure: leaping where the plain path
          * succeeds changed 6 of 1809 results (QA's random ducks), to higher energies or
          * failures */
-        el__snap_load(w, &start);
-        w->lmode = 0;
-        el__chain_reeval(w, 1);
-        w->leap = 1;
-        st = follow_length(w, max_steps, Lt);
-        w->leap = 0;
-        if (st == EL_ENOMEM) { free(buf); return st; }
+        if (!same_leap) {
+            el__snap_load(w, &start);
+            w->lmode = 0;
+            el__chain_reeval(w, 1);
+            w->leap = 1;
+            st = follow_length(w, max_steps, Lt);
+            w->leap = 0;
+            if (st == EL_ENOMEM) { free(buf); return st; }
+        }
         int near = st == EL_ENOCONV && w->lmode && w->resid <= EL__SP_NEAR;
         /* ARC_LEN: the path stalls too where the knot angles stand still along the family
          * and only the pieces move: ducks with a symmetry that fixes every tangent (a ring of
@@ -715,7 +732,7 @@ int el__spline_length_from(el__spchain *w, int max_steps, double Lt)
         } else if (sa == EL_ENOCONV && w->lmode && w->resid <= EL__SP_NEAR) {
             w->near = 1;
         }
-        if (st != EL_OK && !w->near) {
+        if (st != EL_OK && !w->near && !same_jump) {
             /* JUMP (el__spline_follow_family): the plain path again, refusing a step whose
              * length moves against the secant by more than it predicted (a leap onto
              * another branch). Only after every path failed: the rule halves steps of

@@ -26,10 +26,11 @@ static unsigned long call_budget(const el_spline_options *o, size_t n)
  * points (t, 2t), G2 ends (the end's curvature DBL_MAX), by length 15.458 = 6.9 x the polygon,
  * max_steps 15, max_iter 37. That curvature times the mean chord is no batten's (spline.c's
  * UNITS): EL_EDOM before any search, no work. With an end curvature of 1 no spline reaches
- * that length either: el__spline_solve_length's four paths fail, then spline_bracket.c's ladder
- * and the four paths again from each way of its bracket: 9158 chain evaluations (0.7 s) to say
- * EL_ERANGE, within the call's budget 15 x 37 x (16 + 64 / 35) = 9894 (cee94bf's 8 x 15 x 37
- * for each solve stopped it at 4543). */
+ * that length either: el__spline_solve_length's paths fail, then spline_bracket.c's ladder
+ * and the paths again from each way of its bracket: 5794 chain evaluations (0.5 s; 9158
+ * before spline_path.c's SAME_PATH ran no copy of a plain path) to say EL_ERANGE, within the
+ * call's budget 15 x 37 x (16 + 64 / 35) = 9894 (cee94bf's 8 x 15 x 37 for each solve stopped
+ * it at 4543). */
 START_TEST(length_search_within_the_call_budget)
 {
     double xy[72];
