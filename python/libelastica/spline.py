@@ -620,8 +620,9 @@ def elastic_spline(points, tension: Optional[float] = None, length: Optional[flo
                 setattr(arr[i], k, float(getattr(p, k)))
         opt.initial, opt.ninitial = arr, len(pieces)
     units = _units_problem(float(chords.sum()) / len(chords), opt, closed)
-    if units:   # el_spline_solve's EL_EDOM before any search (spline.c's UNITS)
-        raise DomainError(lib.EL_EDOM, "elastic_spline: " + units)
+    if units:   # el_spline_solve's EL_EDOM before any search (spline.c's UNITS); points
+        # beyond the pieces' range are said as the library's EL_EINVAL for them is
+        raise DomainError(lib.EL_EDOM, _out_of_range(pts, chords) or "elastic_spline: " + units)
     places = back_steps(pts, closed)
     if len(places) >= BACK_STEPS_MANY:   # noise: refused before a solve that cannot succeed
         err = DoublesBackError(lib.EL_EDOM, (
