@@ -326,19 +326,22 @@ class BlendTest(S.DocTest):
         self.assertIn("Solution = 8", b.Status)
         self.assertEqual(b.Solution, 8)
 
-    def test_copy_into_sketch_is_a_plain_copy_and_the_feature_follows(self):
+    def test_copy_into_sketch_is_joined_and_the_feature_follows(self):
+        """The copy is joined to both edges (a Tangent at each end, as Sketcher's fillet:
+        QA gui F4; test_elastica_blend_copy_joined has the cases): the Sketcher drags its
+        end with the edge; the feature re-solves G1 to the moved edge."""
         b = Bl.make(self.doc, (self.sk, "Edge1"), (self.sk, "Edge2"))
         self.doc.recompute()
         ng, nc = len(self.sk.Geometry), self.sk.ConstraintCount
         gi = Bl.copy_into_sketch(b)
         self.doc.recompute()
-        self.assertEqual((len(self.sk.Geometry), self.sk.ConstraintCount), (ng + 1, nc))
-        copy = self.sk.Geometry[gi].toShape()
+        self.assertEqual((len(self.sk.Geometry), self.sk.ConstraintCount), (ng + 1, nc + 2))
         self.sk.movePoint(1, 1, App.Vector(85, 40, 0))
         self.doc.recompute()
         self.assertFalse(b.Status.startswith("error"), b.Status)
         self._check_g1(b)                                      # re-solved to the moved edge
-        self.assertLess(abs(self.sk.Geometry[gi].toShape().Length - copy.Length), 1e-12)
+        copy, line = self.sk.Geometry[gi], self.sk.Geometry[1]
+        self.assertLess((copy.EndPoint - line.StartPoint).Length, 1e-9)
 
     def test_save_reopen_recompute_same_result(self):
         b = Bl.make(self.doc, (self.sk, "Edge1"), (self.sk, "Edge2"), Mode="length", Length=70.0)

@@ -582,12 +582,29 @@ def make(doc, edge1, edge2, at_end1=None, at_end2=None, **props):
 
 
 def copy_into_sketch(blend, sketch=None):
-    """Copy the blend's B-spline into the sketch of its edges (or ``sketch``): a copy,
-    tangent to both edges as drawn but not constrained to them, so moving an edge
-    later neither deforms it nor over-constrains the sketch (the feature re-solves).
-    Returns the new geometry index."""
+    """Copy the blend's B-spline into the sketch of its edges (or ``sketch``), joined to
+    both edges where they are in that sketch: an endpoint-to-endpoint Tangent at each
+    joint (geometry.join_ends: coincident and G1 there, as Sketcher_CreateFillet joins its
+    arc), added only where the sketch solves with them moving nothing. A G2 blend's
+    curvature match is in the copy's poles as written: FreeCAD 0.20 has no curvature
+    constraint for B-splines, so an edge edited later keeps the joints coincident and
+    tangent only (the Sketcher bends the copy; the feature re-solves and says how far its
+    copy is off). Returns the new geometry index."""
     from .geometry import write_to_sketch
-    return write_to_sketch(blend, sketch or blend.Edge1[0])[0]
+    target = sketch or blend.Edge1[0]
+    return write_to_sketch(blend, target, constrain_to=_joint_ends(blend, target))[0]
+
+
+def _joint_ends(blend, sketch):
+    """[(geo index, None) of Edge1, (geo index, None) of Edge2] in ``sketch`` (the geometry
+    their links follow, SketchGeometry1/2; None where that edge is not in it): join_ends
+    joins the copy's start and end to the end of each nearer to them."""
+    out = []
+    for prop, index in (("Edge1", "SketchGeometry1"), ("Edge2", "SketchGeometry2")):
+        link, g = getattr(blend, prop), getattr(blend, index)
+        ok = bool(link) and link[0] == sketch and 0 <= g < len(sketch.Geometry)
+        out.append((g if ok else None, None))
+    return out
 
 
 __all__ = ["BlendProxy", "NoBlend", "check_open", "blend_core", "g2_blend", "g2_tension_reach",

@@ -66,8 +66,13 @@ class BlendPanel(Panel):
         same = bool(o.Edge1) and bool(o.Edge2) and o.Edge1[0] == o.Edge2[0] and is_sketch(o.Edge1[0])
         self.into_sketch = self.check(out, "Copy into the edges' sketch", "_copy",
                                       "OK adds a copy of the B-spline to the edges' sketch, "
-                                      "tangent to both as drawn but not constrained: it does not "
-                                      "follow later edits (the blend feature does)",
+                                      "joined to both by Tangent constraints (coincident and "
+                                      "tangent, as Sketcher's fillet joins its arc). G2 is in "
+                                      "the copy's poles as written: FreeCAD has no curvature "
+                                      "constraint for B-splines, so when the edges are edited "
+                                      "later the Sketcher keeps the joints coincident and "
+                                      "tangent only (the blend feature re-solves G2 and says "
+                                      "how far its copy is off)",
                                       target=self, when=lambda: same)
 
     _copy = False

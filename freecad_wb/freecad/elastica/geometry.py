@@ -348,7 +348,9 @@ def write_to_sketch(feature, sketch, constrain_to=None):
     """Add the feature's B-spline edge(s) to ``sketch``, mapped into its plane: a copy,
     which no longer follows the feature. ``constrain_to`` [(geo index, pos), (geo index,
     pos)] adds endpoint tangency of the new curve's start and end to those sketch
-    geometries (what version-1 blends recorded). Returns the new geometry indices.
+    geometries (join_ends: a blend's copy into its edges' sketch, as Sketcher_CreateFillet
+    joins its arc), also where an earlier copy is replaced (a joint it has already is not
+    added twice). Returns the new geometry indices.
     InputProblem, with nothing added, when the sketch is not in the curve's plane.
 
     A sketch that holds an earlier copy of the same feature (its geometry Tags, kept in
@@ -372,7 +374,6 @@ def write_to_sketch(feature, sketch, constrain_to=None):
         App.Console.PrintMessage(
             f"Elastica: {sketch.Label}: its earlier copy of {feature.Label} (geometry "
             f"{', '.join(str(i + 1) for i in ids)}) replaced by the curve of now\n")
-        constrain_to = None                 # joined already
     elif earlier:
         ids, lost = _replace_copy(sketch, earlier, [_marked(c, feature, k)
                                                     for k, c in enumerate(curves)])
@@ -382,21 +383,104 @@ def write_to_sketch(feature, sketch, constrain_to=None):
             f"replaced by the curve of now in {len(curves)} (geometry "
             f"{', '.join(str(i + 1) for i in ids)}), the constraints at its ends kept"
             + (f"; not kept (they named its pieces): {'; '.join(lost)}" if lost else "") + "\n")
-        constrain_to = None
     else:
         ids = [sketch.addGeometry(_marked(c, feature, k), False) for k, c in enumerate(curves)]
     _remember_copy(feature, sketch, ids)
     if constrain_to and ids:
-        import Sketcher
-        (g0, pos0), (g1, pos1) = constrain_to
-        first, last = ids[0], ids[-1]
-        for g, pos, mine, mypos in ((g0, pos0, first, 1), (g1, pos1, last, 2)):
-            try:
-                sketch.addConstraint(Sketcher.Constraint("Tangent", g, pos, mine, mypos))
-            except Exception as exc:  # the solver may refuse; keep the curve
-                App.Console.PrintWarning(f"Elastica: tangency not added ({exc})\n")
-                sketch.addConstraint(Sketcher.Constraint("Coincident", g, pos, mine, mypos))
+        join_ends(sketch, ids, constrain_to)
     return ids
+
+
+# how far (sketch units, relative to the copy's size) a joint's two ends may be apart and
+# what the solver may move them for a joint to be added (join_ends): written exact, ~1e-13
+JOINT_TOL = 1e-9
+
+
+def _joined(sketch, a, b):
+    """Whether a Coincident or Tangent constraint already joins the points ``a`` and ``b``
+    ((geo index, pos) each)."""
+    for c in sketch.Constraints:
+        if c.Type in ("Coincident", "Tangent") and \
+                {(c.First, c.FirstPos), (c.Second, c.SecondPos)} == {a, b}:
+            return True
+    return False
+
+
+def join_ends(sketch, ids, ends):
+    """Join the copy ``ids`` (its pieces in order) to the sketch geometry ``ends`` [(geo
+    index, pos) at its start, (geo index, pos) at its end; pos None: that geometry's end
+    nearer the copy's; geo index None: no joint there] by one endpoint-to-endpoint
+    Tangent at each: what Sketcher_CreateFillet adds at both ends of its arc (checked on
+    FreeCAD 0.20.2: two Tangent constraints, edge end to arc end, no Coincident). Such a
+    Tangent holds the two ends together AND their tangents in line (the Sketcher draws it
+    as one constraint, coincidence included); a Coincident beside it is redundant (the
+    solver's -2). A B-spline's ends are its PosId 1 (start) and 2 (end) there, as a line's.
+    The angle is locked to the ends' sense as written (the Sketcher's own autolock), so
+    solving moves nothing. A joint already held by a Coincident or Tangent is left as it
+    is (Copy into again). The sketch is solved: where it does not solve cleanly (conflicting
+    or redundant constraints: the edge's end held otherwise) or would move the copy, the
+    joints are taken back and the copy left unjoined, said in the report view. Returns the
+    constraints added (their indices)."""
+    import Sketcher
+    original, geometry = sketch.Geometry, sketch.Geometry
+    start = (ids[0], 1)
+    end = (ids[-1], 2)
+    before = [_probe(g) for g in geometry]
+    size = max([1.0] + [abs(v) for pts in before for p in pts for v in (p.x, p.y)])
+    joints, snapped = [], False
+    for (g, pos), mine in ((ends[0], start), (ends[1], end)):
+        if g is None or not 0 <= g < len(geometry) or not hasattr(geometry[g], "FirstParameter"):
+            continue
+        b = _end_point(geometry[mine[0]], mine[1])
+        if pos is None:         # the end nearer the copy's
+            pos = min((1, 2), key=lambda k: (_end_point(geometry[g], k) - b).Length)
+        at = _end_point(geometry[g], pos)
+        if (at - b).Length > JOINT_TOL * size:
+            continue            # not at that end
+        # the copy's end put on the edge's end bit for bit: FreeCAD 0.20's solver takes a
+        # B-spline's end tangent (BSpline::CalculateNormal, from its last two poles) only
+        # where the joint's point EQUALS its end point, else a zero normal: a copy 1.2e-13
+        # off an arc's end was 'partially redundant' and the solver moved it 6.8 mm
+        copy = geometry[mine[0]]
+        copy.setPole(1 if mine[1] == 1 else copy.NbPoles, at)
+        snapped = True
+        if not _joined(sketch, (g, pos), mine):     # (Copy into again: joined already)
+            joints.append((g, pos, *mine))
+    if snapped:
+        sketch.Geometry = geometry      # the snapped ends (Tags, extensions kept)
+    if not joints:
+        return []
+    was = sketch.solve()        # a sketch redundant already stays so: not the joints' doing
+    n0 = len(sketch.Constraints)
+    added = [sketch.addConstraint(Sketcher.Constraint("Tangent", *j)) for j in joints]
+    status = sketch.solve()
+    moved = max(((p - q).Length for g0, g1 in zip(before, sketch.Geometry)
+                 for p, q in zip(g0, _probe(g1))), default=0.0)
+    if status == was and moved <= JOINT_TOL * size:
+        return added
+    for k in reversed(range(n0, len(sketch.Constraints))):
+        sketch.delConstraint(k)
+    sketch.Geometry = original
+    App.Console.PrintWarning(
+        f"Elastica: {sketch.Label}: the copy is not joined to the edges by Tangent "
+        f"constraints: the sketch " + ("would not solve with them (its edges' ends are held "
+                                       "otherwise)" if status != was else
+                                       f"would move them {moved:.3g} mm") + "\n")
+    return []
+
+
+def _probe(g):
+    """Points that show whether the sketch geometry ``g`` moved: its ends and middle, a
+    B-spline's poles too, a point itself."""
+    if not hasattr(g, "FirstParameter"):
+        return [App.Vector(g.X, g.Y, g.Z)] if hasattr(g, "X") else []
+    a, b = g.FirstParameter, g.LastParameter
+    pts = [g.value(a), g.value(0.5 * (a + b)), g.value(b)]
+    return pts + (list(g.getPoles()) if hasattr(g, "getPoles") else [])
+
+
+def _end_point(curve, pos):
+    return curve.value(curve.FirstParameter if pos == 1 else curve.LastParameter)
 
 
 # the Tags of the geometry each earlier copy of a feature wrote ("<sketch name> <tag>"): a
