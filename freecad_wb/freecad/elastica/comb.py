@@ -132,12 +132,16 @@ def _edge_teeth(edge, samples):
     return feet, normals, kappas
 
 
-def comb_core(source, subs=(), samples=60, scale=0.0, element=global_element):
+def comb_core(source, subs=(), samples=60, scale=0.0, element=global_element, more=()):
     """Teeth of a curvature comb: a list per curve of (foot, tip) vector pairs, and
     the scale used. ``samples`` teeth per curve; ``scale`` 0 = automatic (the longest
     tooth 12 % of the source's extent, shape_extent: the same however it is turned);
     ``element``: (obj, name) -> its global edge ``name`` (a feature's: the sketch geometry
-    its link follows, links.followed_reader)."""
+    its link follows, links.followed_reader). ``more``: further (object, sub-element names)
+    combed with it on the same scale (one comb over a blend and the edges it joins: equal
+    curvature gives equal teeth across a joint, QA gui F5), the automatic scale then of all
+    of them (the largest curvature of any, the extent of all together); each keeps its own
+    envelopes."""
     if not 2 <= samples <= 5000:
         raise InputProblem(f"Samples = {samples} is not usable: 2 to 5000 teeth per curve")
     if not math.isfinite(scale):
@@ -146,10 +150,22 @@ def comb_core(source, subs=(), samples=60, scale=0.0, element=global_element):
         raise InputProblem(f"Scale = {scale:g}: the tooth length per unit curvature must be "
                            ">= 0 (0 = automatic); the teeth already point to the side the "
                            "curve turns away from")
+    per_curve, shapes = [], []
+    for obj, names in [(source, subs)] + list(more):
+        curves, shape = _source_teeth(obj, names, samples, element)
+        per_curve += curves
+        shapes.append(shape)
+    shape = shapes[0] if len(shapes) == 1 else Part.makeCompound(shapes)
+    return scaled_teeth(per_curve, shape_extent(shape), scale)
+
+
+def _source_teeth(source, subs, samples, element):
+    """(the (feet, normals, curvatures) of each chain of ``source``'s curves (chained, or of
+    its edges ``subs``), the source's shape: what the automatic scale's extent is of, as
+    before more sources could be combed with it); InputProblem."""
     shape = global_shape(source)              # where it is drawn (a sketch in a Body: placed)
     if shape.isNull():
         raise InputProblem("the comb's source has no geometry")
-    per_curve = []
     proxy = getattr(source, "Proxy", None)
     stored = proxy.plane_curves(source) if hasattr(proxy, "plane_curves") else None
     if stored and all(isinstance(c, el().SmoothElastica) for c in stored[0]):
@@ -160,8 +176,7 @@ def comb_core(source, subs=(), samples=60, scale=0.0, element=global_element):
         if not edges:
             raise InputProblem("the comb's source has no edges")
         per_curve = [_edge_teeth(e, samples) for e in edges]
-    return scaled_teeth(chained(per_curve, 1e-9 * shape.BoundBox.DiagonalLength),
-                        shape_extent(shape), scale)
+    return chained(per_curve, 1e-9 * shape.BoundBox.DiagonalLength), shape
 
 
 def chained(per_curve, gap):
@@ -204,12 +219,17 @@ class CombProxy(FeatureProxy):
     kind = "Comb"
     # a sketch's edges combed are their geometry, followed as the sketch changes (QA: a comb
     # of Edge3 and Edge4 combed two other edges once an earlier line was made construction)
-    followed_links = {"Source": "SourceGeometry"}
+    followed_links = {"Source": "SourceGeometry", "MoreSources": "MoreSourcesGeometry"}
 
     def setup(self, obj):
         add_link(obj, "App::PropertyLinkSub", "Source", "Comb",
                  "An Elastica result, or an object (and optionally its edges)")
         add_geometry_index(obj, "SourceGeometry", "Source", several=True)
+        # (added by a newer version: a comb of an older document gets it empty on restore)
+        add_link(obj, "App::PropertyLinkSubList", "MoreSources", "Comb",
+                 "Further Elastica results or edges combed with Source on the same scale "
+                 "(one comb: equal curvature gives equal teeth across a joint)")
+        add_geometry_index(obj, "MoreSourcesGeometry", "MoreSources")
         add_property(obj, "App::PropertyInteger", "Samples", "Comb",
                      "Teeth per curve (2 to 5000)", 60)
         add_property(obj, "App::PropertyFloat", "Scale", "Comb",
@@ -223,7 +243,20 @@ class CombProxy(FeatureProxy):
         if not obj.Source:
             raise nothing_read("an Elastica result or some edges", "Source")
         element = followed_reader(obj, "Source")      # renames Source: read it after
-        return comb_core(obj.Source[0], obj.Source[1], obj.Samples, obj.Scale, element)
+        more = []
+        if obj.MoreSources:
+            others = followed_reader(obj, "MoreSources")   # renames MoreSources too
+            for src, subs in obj.MoreSources:
+                if src is None:
+                    continue
+                more.append((src, tuple(n for n in subs if n)))
+            if any(src == obj.Source[0] for src, _ in more):
+                raise InputProblem(f"{obj.Source[0].Label} is both Source and in MoreSources: "
+                                   "name it once")
+
+            def element(src, name, first=element, others=others, mine=obj.Source[0]):
+                return first(src, name) if src == mine else others(src, name)
+        return comb_core(obj.Source[0], obj.Source[1], obj.Samples, obj.Scale, element, more)
 
     def apply(self, obj, r):
         teeth, scale = r
@@ -241,10 +274,14 @@ class CombProxy(FeatureProxy):
         obj.Status = "ok"
 
 
-def make(doc, source, subs=(), **props):
-    """A new curvature comb of ``source`` (optionally of its edges ``subs``)."""
+def make(doc, source, subs=(), more=(), **props):
+    """A new curvature comb of ``source`` (optionally of its edges ``subs``), and of the
+    further (object, sub-element names) ``more`` on the same scale (MoreSources)."""
+    # a whole object is (obj, ('',)) in a link list: (obj, ()) is dropped by FreeCAD
+    extra = {"MoreSources": [(o, tuple(n for n in sub_names(s) if n) or ("",))
+                             for o, s in more]} if more else {}
     return new_feature(doc, "ElasticaComb", CombProxy,
-                       Source=(source, [n for n in sub_names(subs) if n]), **props)
+                       Source=(source, [n for n in sub_names(subs) if n]), **extra, **props)
 
 
 __all__ = ["CombProxy", "comb_core", "make", "oriented_extent", "shape_extent"]

@@ -1,0 +1,113 @@
+"""freecadcmd -t tests of a curvature comb over several selected sources (QA gui F5): a G2
+blend and the two sketch edges it joins, selected together, are ONE comb on one scale, so
+equal curvature gives equal teeth across each joint (they were two combs, scales 946 and
+1670, the teeth 1.76 x apart where they met); one source's comb is as before."""
+import math
+
+import FreeCAD as App
+import Part
+
+import elastica_samples as S
+from freecad.elastica import blend as Bl
+from freecad.elastica import comb as Co
+from freecad.elastica import commands as C
+
+
+def _teeth_at(comb, point, tol=1e-6):
+    """The lengths of the comb's teeth with an end at ``point``."""
+    out = []
+    for e in comb.Shape.Edges:
+        if len(e.Vertexes) != 2 or not isinstance(e.Curve, Part.Line):
+            continue
+        if min((v.Point - point).Length for v in e.Vertexes) <= tol:
+            out.append(e.Length)
+    return out
+
+
+class CombTogetherTest(S.DocTest):
+    doc_name = "ElasticaCombTogether"
+
+    def setUp(self):
+        super().setUp()
+        sk = self.sk = self.doc.addObject("Sketcher::SketchObject", "Profile")
+        sk.Placement = App.Placement(App.Vector(0, 0, 10), App.Rotation(App.Vector(1, 1, 0), 25))
+        sk.addGeometry(Part.LineSegment(App.Vector(1500, -800, 0), App.Vector(1620, -800, 0)), False)
+        c = Part.Circle(App.Vector(1830, -710, 0), App.Vector(0, 0, 1), 60)
+        sk.addGeometry(Part.ArcOfCircle(c, math.radians(200), math.radians(330)), False)
+        self.doc.recompute()
+        self.b = Bl.make(self.doc, (sk, "Edge1"), (sk, "Edge2"), Continuity="G2")
+        self.doc.recompute()
+        self.assertFalse(self.b.Status.startswith("error"), self.b.Status)
+
+    def test_blend_and_its_edges_are_one_comb_on_one_scale(self):
+        n = len(self.doc.Objects)
+        made = C.comb_sources([(self.b, ()), (self.sk, ("Edge1", "Edge2"))])
+        self.assertEqual(len(made), 1)
+        self.assertEqual(len(self.doc.Objects), n + 1)
+        comb = made[0]
+        self.assertEqual(comb.Status, "ok")
+        self.assertEqual(comb.Source[0], self.b)
+        self.assertEqual([(o.Name, tuple(s)) for o, s in comb.MoreSources],
+                         [(self.sk.Name, ("Edge1", "Edge2"))])
+        # the scale: the longest tooth of all 12 % of the extent of all
+        e = self.b.Shape.Edges[0]
+        joint = e.valueAt(e.LastParameter)
+        arc = self.sk.Shape.Edges[1]
+        self.assertLess((arc.valueAt(arc.FirstParameter) - joint).Length, 1e-6)
+        teeth = _teeth_at(comb, joint)
+        self.assertEqual(len(teeth), 2, teeth)           # the blend's last, the arc's first
+        # G2 there: equal curvature, equal teeth (60 x the scale / 60)
+        self.assertLess(abs(teeth[0] - teeth[1]), 1e-7 * teeth[0], teeth)
+        self.assertAlmostEqual(teeth[0], comb.UsedScale / 60.0, delta=1e-7 * teeth[0])
+        # a comb alone of each has its own scale: the two differ (what QA saw)
+        alone = [Co.comb_core(self.b)[1], Co.comb_core(self.sk, ("Edge1", "Edge2"))[1]]
+        self.assertGreater(max(alone) / min(alone), 1.2, alone)
+        # parametric: the arc's radius changed, the comb follows on one scale
+        g = self.sk.Geometry[1]
+        g.Radius = 70.0
+        self.sk.Geometry = [self.sk.Geometry[0], g]
+        self.doc.recompute()
+        self.assertEqual(comb.Status, "ok")
+        e = self.b.Shape.Edges[0]
+        teeth = _teeth_at(comb, e.valueAt(e.LastParameter))
+        self.assertEqual(len(teeth), 2, teeth)
+        self.assertLess(abs(teeth[0] - teeth[1]), 1e-7 * teeth[0], teeth)
+
+    def test_one_source_is_combed_as_before(self):
+        """A single source's comb: MoreSources empty, the teeth and scale comb_core gives
+        for it alone (an edge of a sketch: the whole sketch's extent, as before)."""
+        for source, subs in ((self.b, ()), (self.sk, ("Edge2",))):
+            made = C.comb_sources([(source, subs)])
+            self.assertEqual(len(made), 1)
+            comb = made[0]
+            self.assertEqual(list(comb.MoreSources), [])
+            teeth, scale = Co.comb_core(source, subs)
+            self.assertEqual(comb.UsedScale, scale)
+            ends = [p for chain in teeth for pair in chain for p in pair]
+            self.assertLess(max(min((v.Point - p).Length for p in ends)
+                                for v in comb.Shape.Vertexes), 1e-9)
+
+    def test_reopened(self):
+        comb = C.comb_sources([(self.b, ()), (self.sk, ("Edge1", "Edge2"))])[0]
+        scale, name = comb.UsedScale, comb.Name
+        path = S.temp_path(self, "together.FCStd")
+        self.doc.saveAs(path)
+        App.closeDocument(self.doc.Name)
+        self.doc = App.openDocument(path)
+        comb = self.doc.getObject(name)
+        comb.touch()
+        self.doc.recompute()
+        self.assertEqual(comb.Status, "ok")
+        self.assertAlmostEqual(comb.UsedScale, scale, delta=1e-9 * scale)
+        self.assertEqual(len(comb.MoreSources), 1)
+
+    def test_edges_first_then_the_whole_blend(self):
+        """The selection in the other order: the sketch's edges are Source, the whole blend
+        in MoreSources (no sub-element); the same teeth at the joint."""
+        comb = C.comb_sources([(self.sk, ("Edge1", "Edge2")), (self.b, ())])[0]
+        self.assertEqual(comb.Status, "ok")
+        self.assertEqual(comb.MoreSources[0][0], self.b)
+        e = self.b.Shape.Edges[0]
+        teeth = _teeth_at(comb, e.valueAt(e.LastParameter))
+        self.assertEqual(len(teeth), 2, teeth)
+        self.assertLess(abs(teeth[0] - teeth[1]), 1e-7 * teeth[0], teeth)
