@@ -138,7 +138,10 @@ class G2ReachTest(S.DocTest):
         b = Bl.make(self.doc, (sk, "Edge1"), (sk, "Edge2"), Continuity="G2", Tension=0.0)
         self.doc.recompute()
         if "Invalid" not in b.State:    # the solver reaches it: then it joins G2
-            self.assertAlmostEqual(b.BlendTension, 0.0, delta=1e-12)
+            # (or a fairer blend of its branch, shorter, is shown and said: blend_start's
+            # fairer_along, test_elastica_blend_g2_default)
+            if "shown instead the fairest between it and the G1 solution's" not in b.Status:
+                self.assertAlmostEqual(b.BlendTension, 0.0, delta=1e-12)
             return
         self.assertNotIn("gaps below it", b.Status)
         found = re.search("G2 battens were found at tensions up to about ([0-9.e-]+) 1/mm\u00b2, "

@@ -276,6 +276,29 @@ def descriptions(obj):
     return [solution_text(j, *d) for j, d in enumerate(zip(*data, turns))]
 
 
+def g2_rows(obj):
+    """The Solutions rows of a G2 blend, saying what is drawn (QA gui F10: under a 392.6 mm
+    G2 result the rows listed the G1 lengths 206.8 and 380.1 mm alone): each row its G1
+    solution ('G1 1: ...'), the picked one followed by the G2 blend drawn from it (its
+    length, energy, inflections, largest curvature: its stored pieces). descriptions(obj)
+    where the blend is G1, failed, or has no stored pieces."""
+    rows = descriptions(obj)
+    if obj.Continuity != "G2" or not rows or not obj.Curves:
+        return rows
+    from .fit import stored_curves
+    try:
+        pieces = stored_curves(obj)[0]
+    except (ValueError, KeyError, TypeError):
+        return rows
+    energy = sum(bending_energy(p) for p in pieces)
+    kmax = max(float(p.max_curvature) for p in pieces)
+    drawn = (f"; drawn: the G2 blend bent from it, {length_text(float(obj.BlendLength), 4)}, "
+             f"energy {per_length(energy)}, {plural(inflections(pieces), 'inflection')}, "
+             f"max curvature {per_length(kmax)}")
+    i = obj.Solution - 1
+    return [f"G1 {r}" + (drawn if j == i else "") for j, r in enumerate(rows)]
+
+
 class BlendProxy(FeatureProxy):
     """Elastic Hermite curve between an end of one edge and an end of another."""
 
@@ -607,7 +630,7 @@ def _joint_ends(blend, sketch):
     return out
 
 
-__all__ = ["BlendProxy", "NoBlend", "check_open", "blend_core", "g2_blend", "g2_tension_reach",
+__all__ = ["BlendProxy", "NoBlend", "g2_rows", "check_open", "blend_core", "g2_blend", "g2_tension_reach",
            "make", "copy_into_sketch", "nearest_ends",
            "chosen_ends", "picked_end",
            "edge_end", "MODES", "CONTINUITIES"]

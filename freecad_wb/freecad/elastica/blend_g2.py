@@ -87,8 +87,11 @@ def g2_blend(r, i, mode, value, tol, degree):
                            f"{per_length_mark(k0, 3, unit=False)} and {per_length_mark(k1)}; "
                            f"{hint}") from None
     if kw == {"tension": 0.0}:     # the free batten asked (Tension 0, or Length 0)
-        from .blend_start import fairer_than_free   # (blend_start builds on this module)
-        fair = fairer_than_free(pts, ends, r["curves"][i] if r["curves"] else None, sp)
+        from .blend_start import fairer_along, fairer_than_free   # (builds on this module)
+        sibling = r["curves"][i] if r["curves"] else None
+        fair = fairer_than_free(pts, ends, sibling, sp)
+        if fair is None and not note:       # bent from the sibling: the branch between
+            fair = fairer_along(pts, ends, sibling, sp)
         if fair is not None:
             sp, note = fair
     return sp, g2_bspline(sp, tol, degree), note

@@ -15,7 +15,8 @@ from .units import length_mark, unbroken
 
 
 G2_LIST_TIP = (". G2: these are the G1 solutions; the G2 blend is bent from the one picked "
-               "(its branch: loops, inflections)")
+               "(its branch: loops, inflections), and that row says what is drawn: the G2 "
+               "blend's length, energy, inflections")
 
 
 class BlendPanel(Panel):
@@ -254,7 +255,7 @@ class BlendPanel(Panel):
             self.update()
 
     def descriptions(self):
-        return B.descriptions(self.obj)
+        return B.g2_rows(self.obj)
 
     def refresh(self):
         o = self.obj

@@ -161,8 +161,73 @@ def fairer_than_free(pts, ends, sibling, free):
                 + kept_by_tension(pts, sp, m, infl) + ")")
 
 
+# The default G2 blend (Tension 0 asked): the free G2 batten unless it is more than
+# ALONG_LONGER x the G1 solution it is bent from and a G2 blend of the same branch between
+# the two lengths, at ALONG_STEPS lengths, is fairer by more than ALONG_GAIN in bending
+# energy x length (fewest inflections first).
+ALONG_LONGER = 1.25
+ALONG_STEPS = 12
+ALONG_GAIN = 0.9
+
+
+def fairer_along(pts, ends, sibling, free):
+    """Where the free G2 batten ``free`` (tension 0, bent from the G1 solution ``sibling``)
+    is far longer than that solution (ALONG_LONGER) and less fair: the fairest G2 blend of
+    lengths between
+    the two (ALONG_STEPS of them, the sibling's included, each bent from ``sibling``): at
+    most as many inflections as ``free`` and as ``sibling`` plus one, fewest first, then the
+    lowest bending energy x length (the energy of its shape whatever its size, as
+    fairest_by_length). Returns (el.ElasticSpline, note for Status) where its energy x length
+    is below ALONG_GAIN x the free batten's, else None (the free batten is the blend).
+
+    Why (QA gui F10): bent from the G1 solution, the free batten between a line and an arc
+    of radius 60 mm is 392.6 mm long and 128 mm off the chord, against the G1 solution's
+    206.8 and 43: a tall loop over the arc, the G2 version of the 380 mm G1 solution 2 (bent
+    from that one, the same curve). Its bending energy is not the branch's least (0.0997/mm
+    against 0.0994 at 274 mm; of 13 line / arc / B-spline pairs, at most 1.2 % below the
+    least of the branch's shorter members, and 6.6 % and 19 % above it on two): along the
+    guided batten's family the guide ducks do work, so tension 0 is not its least energy.
+    The fairest by energy x length is 253 mm (25.5 against 39.1, 62 mm off the chord,
+    2 inflections as the free one). Where the free batten is about
+    the G1 length (lines, an arc into a line: at most 1.2 x in the 13 pairs; the batten a few
+    % longer and pushed hard instead, tension -0.12/mm^2 on a 48 mm blend, is no better
+    seen) it stays the blend."""
+    e = el()
+    if not isinstance(sibling, e.SmoothElastica):
+        return None
+    a, b = float(sibling.length), float(free.length)
+    if b <= ALONG_LONGER * a:
+        return None         # about the G1 solution's length: the free batten is the blend
+    free_infl = inflections(free.pieces)
+    cap = min(free_infl, len(e.elastica_inflections(sibling)) + 1)
+    free_key = float(free.energy) * b
+    best = None
+    for k in range(ALONG_STEPS):
+        length = a + (b - a) * k / ALONG_STEPS
+        try:
+            sp = quiet_g2(pts, ends, length=length, initial=[sibling])
+        except (ValueError, ArithmeticError, RuntimeError):
+            continue
+        infl = inflections(sp.pieces)
+        key = (infl, float(sp.energy) * float(sp.length))
+        if infl <= cap and (best is None or key < best[0]):
+            best = (key, sp)
+    if best is None or best[0][1] >= ALONG_GAIN * free_key:
+        return None
+    (infl, fair), sp = best
+    dist = float(np().linalg.norm(pts[1] - pts[0]))
+    return sp, (f" (the free batten (tension 0) is {length_mark(b, 4)} long, bending energy "
+                f"\u00d7 length {free_key:.3g}: shown instead the fairest between it and the G1 "
+                f"solution's {length_mark(a, 4)}, {length_mark(sp.length, 6)}, "
+                f"{plural(infl, 'inflection')}, energy \u00d7 length {fair:.3g}, at tension "
+                f"{tension_mark(sp.tension, dist, G2_TENSION_DIGITS)}: Tension 0 keeps it, a "
+                "Length is solved from that length's own G1 solution; bent from a longer G1 "
+                "solution the free batten may be its own)")
+
+
 __all__ = ["LENGTH_MULTIPLES", "starting_length", "free_or_length", "fairest_by_length",
-           "fair_where_no_free", "fairer_than_free", "kept_by_tension"]
+           "fair_where_no_free", "fairer_than_free", "kept_by_tension", "fairer_along",
+           "ALONG_LONGER", "ALONG_STEPS", "ALONG_GAIN"]
 
 
 def g2_start(e0, at_end0, e1, at_end1, plane, length):

@@ -1,0 +1,86 @@
+"""freecadcmd -t tests of the default G2 blend (QA gui F10): bent from G1 solution 1, the free
+G2 batten between a line and an arc of radius 60 mm is 392.6 mm long, a tall loop, against
+the G1 solution's 206.8 mm; the fairest G2 blend of its branch between the two lengths
+(fewest inflections, then bending energy x length) is shown instead and said, and the
+Solutions rows say what is drawn. Where the free batten is about the G1 length it stays."""
+import math
+
+import FreeCAD as App
+import Part
+
+import elastica_samples as S
+from freecad.elastica import blend as Bl
+from freecad.elastica import blend_start as BS
+
+
+def _chord_height(b):
+    e = b.Shape.Edges[0]
+    a, z = e.valueAt(e.FirstParameter), e.valueAt(e.LastParameter)
+    d = (z - a).normalize()
+    return max(((p - a) - d * (p - a).dot(d)).Length for p in e.discretize(200))
+
+
+class BlendG2DefaultTest(S.DocTest):
+    doc_name = "ElasticaBlendG2Default"
+
+    def line_arc(self):
+        sk = self.doc.addObject("Sketcher::SketchObject", "Profile")
+        sk.addGeometry(Part.LineSegment(App.Vector(1500, -800, 0), App.Vector(1620, -800, 0)), False)
+        c = Part.Circle(App.Vector(1830, -710, 0), App.Vector(0, 0, 1), 60)
+        sk.addGeometry(Part.ArcOfCircle(c, math.radians(200), math.radians(330)), False)
+        self.doc.recompute()
+        return sk
+
+    def test_line_into_arc_shows_the_fairest_of_its_branch(self):
+        sk = self.line_arc()
+        b = Bl.make(self.doc, (sk, "Edge1"), (sk, "Edge2"))
+        self.doc.recompute()
+        g1_length, g1_height = b.Shape.Edges[0].Length, _chord_height(b)
+        self.assertAlmostEqual(g1_length, 206.8, delta=0.1)
+        b.Continuity = "G2"
+        self.doc.recompute()
+        self.assertEqual((b.Mode, b.Tension), ("tension", 0.0))
+        self.assertIn("(the free batten (tension 0) is 392.57 mm", b.Status)
+        self.assertIn("shown instead the fairest between it and the G1 solution's 206.77 mm",
+                      b.Status)
+        # shorter and lower than the free batten's 392.6 / 128 mm; as many inflections (2)
+        self.assertLess(b.BlendLength, 1.25 * g1_length)
+        self.assertLess(_chord_height(b), 1.5 * g1_height)
+        curves = b.Proxy.plane_curves(b)[0]
+        self.assertEqual(Bl.inflections(curves), 2)
+        fair = sum(Bl.bending_energy(p) for p in curves) * b.BlendLength
+        self.assertLess(fair, BS.ALONG_GAIN * 39.15)
+        # G2 at both joints: the line's curvature 0, the arc's 1/60
+        e = b.Shape.Edges[0]
+        self.assertLess(abs(e.curvatureAt(e.FirstParameter)), 1e-6)
+        self.assertAlmostEqual(e.curvatureAt(e.LastParameter), 1 / 60.0, delta=1e-6)
+        # Tension 0 keeps it: recomputed, the same curve
+        length = b.BlendLength
+        b.touch()
+        self.doc.recompute()
+        self.assertAlmostEqual(b.BlendLength, length, delta=1e-9 * length)
+        # the Solutions rows: G1 each, the picked one says what is drawn
+        rows = Bl.g2_rows(b)
+        self.assertEqual(len(rows), len(b.Lengths))
+        self.assertTrue(all(r.startswith("G1 ") for r in rows), rows)
+        self.assertIn(f"drawn: the G2 blend bent from it, {length:.2f} mm", rows[0])
+        self.assertNotIn("drawn", rows[1])
+        # back to G1: the rows are the G1 solutions' own
+        b.Continuity = "G1"
+        self.doc.recompute()
+        self.assertEqual(Bl.g2_rows(b), Bl.descriptions(b))
+
+    def test_where_the_free_batten_is_about_the_g1_length_it_stays(self):
+        """An arc into a line (the free G2 batten 154.4 mm against the G1 solution's 149.4,
+        energy x length 5.61, the branch's best no fairer): the free batten."""
+        sk = self.doc.addObject("Sketcher::SketchObject", "ArcLine")
+        c = Part.Circle(App.Vector(0, 0, 0), App.Vector(0, 0, 1), 50)
+        sk.addGeometry(Part.ArcOfCircle(c, math.radians(180), math.radians(270)), False)
+        sk.addGeometry(Part.LineSegment(App.Vector(120, 30, 0), App.Vector(220, 30, 0)), False)
+        self.doc.recompute()
+        b = Bl.make(self.doc, (sk, "Edge1"), (sk, "Edge2"), Continuity="G2")
+        self.doc.recompute()
+        self.assertIn("(free batten)", b.Status)
+        self.assertNotIn("shown instead", b.Status)
+        self.assertEqual(b.BlendTension, 0.0)
+        self.assertAlmostEqual(b.BlendLength, 154.4, delta=0.1)
