@@ -90,6 +90,12 @@ def blend_panel(doc, S):
             and abs(b.Shape.Length - 70.0) < 1e-2
             and b.ViewObject.Proxy.overlay_counts() == (2, 2 * 3),
             f"blend: G2 from the chosen solution at the typed length, guide ducks drawn ({b.Status})")
+    rows = [panel.list.item(r).text() for r in range(panel.list.count())]
+    G.check(rows and all(r.startswith("G1") for r in rows) and
+            sum("drawn: the G2" in r for r in rows) == 1 and
+            "drawn: the G2" in rows[b.Solution - 1],
+            f"blend G2: the Solutions rows are the G1 solutions, the picked one says what is "
+            f"drawn (QA gui F10) ({rows[b.Solution - 1] if rows else rows})")
     G.screenshot("gui_blend_panel.png")
     # another Elastica command while this panel is open: inactive, and refused when called
     # (FreeCAD's own commands leave an open dialog alone; it was replaced without its OK
@@ -109,6 +115,10 @@ def blend_panel(doc, S):
     G.pump()
     G.check(b.Name in [o.Name for o in doc.Objects] and len(sk.Geometry) == ng + 1,
             "blend OK: the feature stays, a copy goes into the sketch")
+    joints = [(c.Type, c.Second, c.SecondPos) for c in sk.Constraints][-2:]
+    G.check(sorted(joints) == [("Tangent", ng, 1), ("Tangent", ng, 2)] and sk.solve() == 0,
+            f"blend OK: the copy is joined to both edges by a Tangent, as Sketcher's fillet, "
+            f"and the sketch solves (QA gui F4) ({joints})")
     # Cancel reverts an edit of an existing feature
     before = (b.Mode, b.Length, b.Tension, round(b.Shape.Length, 9))
     panel = G.double_click(b)

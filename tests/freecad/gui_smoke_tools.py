@@ -123,3 +123,12 @@ def comb_panel(doc, blend):
     panel.reject()
     G.pump()
     G.check(comb.Samples == s0 and len(comb.Shape.Edges) == e0, "comb Cancel reverts")
+    # the blend and the edges it joins selected together: ONE comb on one scale (QA gui F5)
+    sk = blend.Edge1[0]
+    n0 = G.run_on(doc, "Elastica_Comb", [(blend, ""), (sk, "Edge1"), (sk, "Edge2")])
+    both = doc.Objects[-1]
+    G.check(len(doc.Objects) == n0 + 1 and both.Status == "ok" and both.Source[0] == blend and
+            [(o, tuple(n)) for o, n in both.MoreSources] == [(sk, ("Edge1", "Edge2"))],
+            f"Curvature comb of a blend and its two edges: one comb ({len(doc.Objects) - n0} "
+            f"made, {both.Status})")
+    doc.removeObject(both.Name)
