@@ -2,7 +2,9 @@
 an affine arc-length polyline moved so that its G2 quadratic B-spline (:func:`g2_bspline`)
 starts with the source's curvature (_match_start: x_1 on the line keeping A_2 = A) and its
 tangent too (_hold_start: x_1, x_2 slid, _slid), every joint staying G2; _matched_ends does
-both ends of a piece; the source's end curvature and a closed source's seam estimated
+both ends of a piece; the ends where two pieces meet (an inflection) held to the source's
+tangent there, both or neither, so the pieces meet G1 (_joint_end, _held_joints,
+_hold_joints); the source's end curvature and a closed source's seam estimated
 from samples (_end_curvature, _seam_estimate) and the ends' errors (_rel_err, _menger_max).
 """
 from __future__ import annotations
@@ -444,3 +446,84 @@ def _joins(splines) -> Tuple[float, float]:
         angle = max(angle, abs(math.atan2(ta[0] * tb[1] - ta[1] * tb[0], ta @ tb)))
         jump = max(jump, abs(float(a.curvature(a.knots[-1:])[0] - b.curvature(b.knots[:1])[0])))
     return angle, jump
+
+
+# a piece's end at an inflection (where two pieces meet) holds the source's tangent there
+# when both pieces have this many edges or more (x_1 alone, _match_tangent; from 7 on x_1,
+# x_2, _hold_start, as at the source's own ends): a piece's two ends then move vertices
+# that neither end's parabola reads for the other (as _matched_ends')
+JOINT_HOLD_EDGES = 5
+
+
+def _joint_end(x: np.ndarray, start, end, tangent, which: int) -> Optional[np.ndarray]:
+    """The piece's polyline x with its end ``which`` (0: start, 1: end), an inflection of the
+    source, holding the source's unit ``tangent`` there, or None where it has no such place.
+    x_1, x_2 (x_{m-1}, x_{m-2}) slid (_hold_start) so that the end parabola takes the tangent
+    and keeps the curvature the uniform end has (g2_bspline(x)'s there); where that finds
+    none, x_1 (x_{m-1}) alone (_match_tangent: the end curvature then ~6 % larger, 0.00066
+    against 0.00062 /mm on the QA S at 24 edges). Why the uniform end's curvature: no G2
+    quadratic ends with curvature 0, the inflection's (_match_tangent); a smaller one is
+    reached only through a bump in the curvature just inside (the QA S at 24 edges: 0.5 x
+    it halves the joint's jump but leaves |kappa| no longer rising from the joint, 0.29 of
+    the source's largest curvature off it against 0.063)."""
+    r = x if which == 0 else x[::-1].copy()
+    P, Q = (start, end) if which == 0 else (end, start)
+    T = np.asarray(tangent, dtype=float) * (1.0 if which == 0 else -1.0)
+    try:
+        kappa = _start_curvature(g2_bspline(r, P, Q))
+    except DomainError:
+        return None
+    z = _hold_start(r, P, Q, kappa, T) if kappa != 0.0 and len(x) >= 8 else None
+    if z is None:
+        z = _match_tangent(r, P, Q, T)
+        if z is None:
+            return None
+        z[2] = r[2]
+    return z if which == 0 else z[::-1].copy()
+
+
+def _held_joints(points: np.ndarray, piece_start, ends: np.ndarray, ends_dir) -> dict:
+    """Where two pieces of a G2 quadratic meet (joint j: piece j-1's end, piece j's start, at
+    an inflection of the source): {j: (piece j-1's polyline, piece j's)} with both ends holding
+    the source's tangent there (_joint_end: the pieces then meet G1, QA gui F3), for the
+    joints where both pieces have JOINT_HOLD_EDGES edges or more and both find a place; held
+    only so, since one side held alone can turn the two farther apart (0.39 deg against 0.26
+    at 12 edges of an S). ``ends_dir`` None (point data without tangents): none."""
+    held = {}
+    if ends_dir is None:
+        return held
+    for j in range(1, len(piece_start) - 1):
+        a, m, b = piece_start[j - 1], piece_start[j], piece_start[j + 1]
+        if min(m - a, b - m) < JOINT_HOLD_EDGES:
+            continue
+        left = _joint_end(points[a:m + 1], ends[j - 1], ends[j], ends_dir[j], 1)
+        right = None if left is None else _joint_end(points[m:b + 1], ends[j], ends[j + 1],
+                                                     ends_dir[j], 0)
+        if right is not None:
+            held[j] = (left, right)
+    return held
+
+
+def _hold_joints(built: list, joints: dict, ends: np.ndarray, factor: float,
+                 deviation) -> None:
+    """g2_quadratic's pieces ``built`` [(x, spline, deviation, ...)] with the ends of each
+    joint j in ``joints`` (_held_joints: piece j-1's end, piece j's start) moved to hold the
+    source's tangent there, both or neither: kept where neither piece's ``deviation(p,
+    spline)`` exceeds ``factor`` x the largest of all pieces before (the splines' stated
+    deviation not growing; a short piece beside the inflection can stray farther locally,
+    a 0.235 mm piece of 15 edges to 0.376 mm beside one of 0.269, and then stays as it was).
+    In place; joints from left to right, so a piece between two carries both moves."""
+    limit = factor * max(b[2] for b in built)
+    for j in sorted(joints):
+        new = []
+        for p, lo, hi in ((j - 1, -3, -1), (j, 1, 3)):
+            x = built[p][0].copy()
+            x[lo:hi] = joints[j][p - j + 1][lo:hi]
+            try:
+                bs = g2_bspline(x, ends[p], ends[p + 1])
+            except DomainError:
+                break
+            new.append((x, bs, deviation(p, bs)))
+        if len(new) == 2 and max(d for _, _, d in new) <= limit:
+            for p, (x, bs, d) in zip((j - 1, j), new):
+                built[p] = (x, bs, d) + tuple(built[p][3:])

@@ -20,8 +20,8 @@ from .affine import (AffinePolyline, EdgeCountError, EndPieces, _curve_samples, 
 from .g2dev import refined_deviation
 from .g2quad_points import (_built_locally, _end_curvatures, _local_source, _noisy_points_error,
                             _repeated_points, _seam_duck)
-from .g2ends import (_end_curvature, _matched_ends, _menger_max, _rel_err, _seam_estimate,
-                     _joins, _seam_rounding, _tangent_alone)
+from .g2ends import (_end_curvature, _held_joints, _hold_joints, _matched_ends, _menger_max,
+                     _rel_err, _seam_estimate, _joins, _seam_rounding, _tangent_alone)
 
 __all__ = ["G2Quadratic", "CoverageError", "CoverageWarning", "EndTangentWarning", "covering_edges",
            "g2_quadratic"]
@@ -39,13 +39,14 @@ class G2Quadratic(ValueEquality):
     refined by golden section (g2dev.refined_deviation: a maximum, not a bound);
     curvature_jump: the largest relative curvature jump at any joint inside a piece (0 up
     to rounding: G2); end_tangent_error: the largest angle (radians) between a piece's end tangent and the source's there (None when the
-    source's tangents are unknown; O(edge) at the inflections, where a quadratic end
-    segment that meets its joint G2 has no freedom left for the tangent);
+    source's tangents are unknown; at the inflections as inflection_tangent_error);
     source_end_tangent_error: the same (radians) at the source's own ends that the splines reach
     (~1e-13: x_1, x_2 placed for the tangent and the curvature, see g2_quadratic; O(edge)
     where that is not done: an end piece of fewer than 7 edges, or a farther spline);
     inflection_tangent_error: the same (radians) at the pieces' ends at inflections (None: no
-    such end, or tangents unknown): O(edge), the end parabola there has no freedom left;
+    such end, or tangents unknown): ~1e-13 where both pieces there hold it (see g2_quadratic:
+    they meet G1), else O(edge) (a piece of fewer than 5 edges, or one that would stray
+    farther from the source);
     covers_source: False
     when an end piece next to an inflection was too short to keep, so the splines
     start / stop at that inflection (§4.4), or (fit_ends=False) when the polyline's last
@@ -56,7 +57,9 @@ class G2Quadratic(ValueEquality):
     points' distances to it), else None.
     join_angle (radians) / join_curvature_jump: where two pieces meet (at the source's inflections;
     the pieces are G2 inside, not there) the largest angle (radians) between their tangents
-    and the largest jump of their signed curvature (1/length); 0 with one piece.
+    (~1e-15 where the ends hold the source's tangent: G1) and the largest jump of their
+    signed curvature (1/length; never 0: no G2 quadratic ends with the inflection's curvature
+    0, each side ends with its own sign, ~ the source's kappa' x an edge); 0 with one piece.
     end_curvature_error: at the source's own ends that the splines reach, the largest
     curvature error relative to the source's curvature scale, |k - k_src| / max(|k_src|,
     max |kappa| of the source over that end piece's span) (of point data: k_src from a
@@ -114,7 +117,8 @@ class G2Quadratic(ValueEquality):
             return inside
         return (f"{inside}; where the {len(self.bsplines)} pieces meet (inflections): tangents "
                 f"{math.degrees(self.join_angle):.3g} deg apart, curvature jump "
-                f"{self.join_curvature_jump:.3g} (not G2 there)")
+                f"{self.join_curvature_jump:.3g} ("
+                + ("G1, " if self.join_angle <= SEAM_G2 else "") + "not G2 there)")
 
     @property
     def npoles(self) -> int:
@@ -417,6 +421,13 @@ def g2_quadratic(curve_or_points, n: int, samples_per_vertex: int = 20, tangents
     joint, unless that spline strays farther from the source (then the curvature alone, a
     k = 1.5 loop at 12 edges); the curvature then departs up to ~10 % from an arc's just
     inside the ends (7.4 % with the curvature alone).
+    Where two pieces meet (an inflection) and the tangents are known, both ends hold the
+    source's tangent there (g2ends._joint_end: x_1, x_2 slid keeping the uniform end's
+    curvature; x_1 alone at 5 or 6 edges), so the pieces meet G1 (they were O(edge) apart:
+    0.0037 deg at 24 edges of an S), unless a piece has fewer than 5 edges or the splines
+    would stray farther from the source (both ends or neither). Not G2: no G2 quadratic
+    ends with the inflection's curvature 0; a smaller end curvature than the uniform end's
+    is reached only through a bump in the curvature just inside.
     Far from (0, 0) (survey coordinates) it builds the source moved by a local origin
     (exactly: points less it, an elastica's start(s) moved) and moves the result back, so the
     result is the origin's translated to rounding of the source's size (main: 1e-7 of it,
@@ -577,6 +588,7 @@ def g2_quadratic(curve_or_points, n: int, samples_per_vertex: int = 20, tangents
         length = float(seg.sum())
     splines, jump, dev, terr, serr, ierr, missed = [], 0.0, 0.0, 0.0, [], [], []
     poly = ap.points.copy()
+    joints, built = _held_joints(ap.points, ap.piece_start, ends, ends_dir), []
     for p in range(npieces):
         a, b = ap.piece_start[p], ap.piece_start[p + 1]
         first, last = p == 0 and covers[0], p == npieces - 1 and covers[1]
@@ -652,6 +664,14 @@ def g2_quadratic(curve_or_points, n: int, samples_per_vertex: int = 20, tangents
                     x, bs, pdev = xa, ba, adev
                     for e in lost:
                         holds[e], gave_up[e] = True, None
+        built.append((x, bs, pdev, first, last, holds, gave_up))
+    # the ends at inflections hold the source's tangent there, both pieces or neither (G1
+    # where they meet; QA gui F3: 0.023 deg apart on a fitted S at 24 edges), where the
+    # splines stray no farther from the source for it (g2ends._hold_joints)
+    _hold_joints(built, joints, ends, TANGENT_ALONE_DEV, lambda p, b: _spline_deviation(
+        b, samples, t_ends[p], t_ends[p + 1]))
+    for p, (x, bs, pdev, first, last, holds, gave_up) in enumerate(built):
+        a, b = ap.piece_start[p], ap.piece_start[p + 1]
         poly[a:b + 1] = x
         kl, kr = quadratic_joint_curvatures(bs)
         if len(kl):

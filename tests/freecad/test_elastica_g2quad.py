@@ -52,7 +52,7 @@ class G2QuadTest(S.DocTest):
                          "was deleted: relink Source")
 
     def test_where_the_pieces_meet_is_reported_as_measured(self):
-        """The pieces meet at the inflection: JoinAngle and JoinCurvatureJump are the
+        """The pieces meet at the inflection, G1: JoinAngle and JoinCurvatureJump are the
         angle between their tangents and the jump of their signed curvature there, measured
         here on the shape's edges by finite differences of positions (the panel said 'G2'
         where the curvature went -0.0019 -> +0.0019/mm, QA)."""
@@ -76,6 +76,13 @@ class G2QuadTest(S.DocTest):
         a, b = es
         ta, tb = a.tangentAt(a.LastParameter), b.tangentAt(b.FirstParameter)
         self.assertAlmostEqual(q.JoinAngle, math.degrees(ta.getAngle(tb)), delta=1e-6)
+        # G1 there: both pieces hold the source's tangent (QA gui F3: 0.023 deg apart on a
+        # fitted S at 24 edges), read exactly (atan2: getAngle's acos floors at ~1e-6 deg)
+        angle = math.degrees(math.atan2(ta.cross(tb).Length, ta.dot(tb)))
+        self.assertAlmostEqual(q.JoinAngle, angle, delta=1e-12)
+        self.assertLess(q.JoinAngle, 1e-9)
+        self.assertEqual(Q.join_words(q.JoinAngle), "G1, not G2 there")
+        self.assertEqual(Q.join_words(0.01), "not G2 there")
         jump = abs(turning(a, True) - turning(b, False))
         self.assertAlmostEqual(q.JoinCurvatureJump, jump, delta=0.02 * jump + 1e-9)
         self.assertGreater(q.JoinCurvatureJump, 1e3 * q.CurvatureJump / q.Shape.Length)

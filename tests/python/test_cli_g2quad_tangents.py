@@ -9,9 +9,11 @@ import json
 import re
 
 import numpy as np
+import pytest
 
 import libelastica as el
 from cli_run import cli
+from libelastica import g2ends
 
 # QA25 glyph.py's open stroke 'S' spine: hand-placed ducks of a type designer
 DUCKS_S = [(520, 700), (380, 640), (330, 520), (450, 420), (580, 320), (560, 180), (420, 120),
@@ -24,7 +26,14 @@ def _figure(text: str, words: str) -> float:
     return float(m.group(1))
 
 
-def test_end_tangent_line_gives_the_source_ends_and_the_inflection_its_own(capsys, tmp_path):
+@pytest.mark.parametrize("held", [False, True])
+def test_end_tangent_line_gives_the_source_ends_and_the_inflection_its_own(capsys, tmp_path,
+                                                                         monkeypatch, held):
+    """held False: the pieces' ends at the inflection as a piece of fewer than
+    JOINT_HOLD_EDGES edges leaves them (g2ends._held_joints out of reach): O(edge), the case
+    QA25 met; True (the default): held to the source's tangent there, ~1e-13 as the ends."""
+    if not held:
+        monkeypatch.setattr(g2ends, "JOINT_HOLD_EDGES", 10 ** 9)
     csv = tmp_path / "s.csv"
     csv.write_text("".join(f"{x},{y}\n" for x, y in DUCKS_S))
     code, out, err = cli(capsys, "spline", csv, "--json", tmp_path / "sp.json")
@@ -37,7 +46,10 @@ def test_end_tangent_line_gives_the_source_ends_and_the_inflection_its_own(capsy
     infl_deg = np.degrees(doc["inflection_tangent_error_rad"])
     assert doc["pieces"] == 2
     # the case QA25 met: the inflection's error is the larger, the all-ends figure is it
-    assert infl_deg > 1.5 * ends_deg
+    if held:
+        assert infl_deg < 1e-9
+    else:
+        assert infl_deg > 1.5 * ends_deg
     assert np.isclose(np.degrees(doc["piece_end_tangent_error_rad"]), max(ends_deg, infl_deg))
     # the key named 'end' holds the ends' (QA qapy F5: it held the inflection's, 0.0213 deg
     # where the ends were 8e-13 deg off)

@@ -300,17 +300,27 @@ def _joins(edges, plane):
     """Where consecutive pieces meet: the largest angle between their tangents (degrees)
     and the largest jump of their signed curvature in ``plane`` (1/mm, plane_curvature).
     Seed 002's pieces are G2 inside and only meet at the inflections (QA: 'G2' shown where
-    the curvature went -0.0019 -> +0.0019/mm and the tangents 0.027 deg apart)."""
+    the curvature went -0.0019 -> +0.0019/mm and the tangents 0.027 deg apart); G1 there
+    where both hold the source's tangent (the library's g2ends._joint_end). The angle by
+    atan2(|ta x tb|, ta . tb): Vector.getAngle's acos reads ~1e-6 deg for parallel ones."""
     angle = jump = 0.0
     inv = plane.Rotation.inverted()
     for a, b in zip(edges, edges[1:]):
         ta = App.Vector(a.tangentAt(a.LastParameter))
         tb = App.Vector(b.tangentAt(b.FirstParameter))
-        angle = max(angle, math.degrees(ta.getAngle(tb)))
+        angle = max(angle, math.degrees(math.atan2(ta.cross(tb).Length, ta.dot(tb))))
         t = inv.multVec(ta)
         jump = max(jump, abs(plane_curvature(a, True, (t.x, t.y), plane) -
                              plane_curvature(b, False, (t.x, t.y), plane)))
     return angle, jump
+
+
+def join_words(angle):
+    """What the pieces' meeting at the inflections is, from JoinAngle (degrees): 'G1, not G2
+    there' where their tangents agree to the library's SEAM_G2 (radians), else 'not G2
+    there'. Never G2: no G2 quadratic ends with the inflection's curvature 0."""
+    g1 = math.radians(angle) <= el().g2quad.SEAM_G2
+    return ("G1, " if g1 else "") + "not G2 there"
 
 
 class G2QuadProxy(FeatureProxy):
@@ -336,7 +346,9 @@ class G2QuadProxy(FeatureProxy):
                      "rounding: G2)")
         add_property(obj, "App::PropertyFloat", "JoinAngle", "Result",
                      "Largest angle between two pieces' tangents where they meet, at the "
-                     "inflections (degrees; the pieces are G2 inside, not where they meet)")
+                     "inflections (degrees): ~1e-11 where both pieces there have 5 edges or "
+                     "more, G1; the pieces are G2 inside, not where they meet (no G2 quadratic "
+                     "ends with the inflection's curvature 0)")
         add_property(obj, "App::PropertyFloat", "JoinCurvatureJump", "Result",
                      "Largest jump of the signed curvature where two pieces meet (1/mm)")
         add_property(obj, "App::PropertyFloat", "EndTangentError", "Result",
@@ -411,4 +423,4 @@ def make(doc, sources=(), **props):
                        Source=source_list(sources), **props)
 
 
-__all__ = ["EdgesProblem", "G2QuadProxy", "g2quad_core", "make", "seam_status"]
+__all__ = ["EdgesProblem", "G2QuadProxy", "g2quad_core", "join_words", "make", "seam_status"]

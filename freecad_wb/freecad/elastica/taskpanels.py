@@ -18,6 +18,7 @@ from . import spline as Sp
 from .blend_panel import BlendPanel
 from .fit_core import DISTANCE_NAMES, DISTANCES, MODEL_NAMES, MODEL_TIPS, MODELS
 from .fit_ends import CONTINUITIES, CONTINUITY_NAMES
+from .g2quad import join_words
 from .sources import THOUSANDS
 from .panelbase import CURRENT, Panel, _fmt, said_now
 from .units import (area_text, figure_text, length_unit, number_text, per_length, tension_text,
@@ -454,7 +455,7 @@ class G2QuadPanel(Panel):
                 f"{figure_text(o.Deviation)}<br>"
                 f"curvature jump at joints inside the pieces: {number_text(o.CurvatureJump)} (G2)<br>"
                 + (f"where the pieces meet: tangents {number_text(o.JoinAngle)}\u00b0 apart, curvature "
-                   f"jump {per_length(o.JoinCurvatureJump)} (not G2 there)<br>"
+                   f"jump {per_length(o.JoinCurvatureJump)} ({join_words(o.JoinAngle)})<br>"
                    if o.Pieces > 1 else "")
                 + f"tangent off the source's at its ends by {number_text(o.SourceEndTangentError)}\u00b0"
                 + (f", at any piece's end (the inflections) by at most "

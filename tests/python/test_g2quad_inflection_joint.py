@@ -1,0 +1,115 @@
+"""Where two pieces of the G2 quadratic meet (an inflection of the source) both hold the
+source's tangent there: G1 to rounding (QA gui F3: an S fit's two pieces met 0.023 deg apart at
+24 edges). Not G2: no G2 quadratic ends with curvature 0 (g2ends._match_tangent), so each
+side keeps a curvature of its own sign, the uniform end's (g2ends._joint_end: a smaller one
+only through a bump in the curvature just inside). Checked against the plain build (no joint
+held, JOINT_HOLD_EDGES out of reach) over S elasticae, splines and samples with tangents."""
+import math
+import warnings
+
+import numpy as np
+import pytest
+
+import libelastica as el
+from libelastica import g2ends as G
+
+QA_S = el.SmoothElastica(x0=1500, y0=-800, phi=0.3, mu=(1 / 120.0) ** 2, k=0.6, q=0.2,
+                         length=380.0)
+
+
+def _s_curve(i):
+    rng = np.random.default_rng(100 + i)
+    return el.SmoothElastica(x0=[0, 1500, 5e5][i % 3], y0=[0, -800, 5e6][i % 3],
+                             phi=rng.uniform(-3, 3), mu=(1 / 120.0) ** 2,
+                             k=[0.4, 0.6, 0.8, 0.95][i % 4], q=rng.uniform(-0.5, 0.5),
+                             length=rng.uniform(200, 600))
+
+
+def _build(src, n, plain, monkeypatch, **kw):
+    with monkeypatch.context() as m:
+        if plain:
+            m.setattr(G, "JOINT_HOLD_EDGES", 10 ** 9)
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore")
+            return el.g2_quadratic(src, n, **kw)
+
+
+def _end_tangent(b, j):
+    d = b.derivative(b.knots[[j]])[0]
+    return d / np.hypot(*d)
+
+
+@pytest.mark.parametrize("n", [12, 24, 48, 200])
+def test_the_qa_s_meets_g1_at_its_inflection(n, monkeypatch):
+    c = QA_S
+    s = np.linspace(0, c.length, 20 * n + 1)
+    th = c.angle(s)
+    kmax = float(np.max(np.abs(c.curvature(s))))
+    for src, kw in ((c, {}), (c.points(s), {"tangents": np.c_[np.cos(th), np.sin(th)]})):
+        g = _build(src, n, False, monkeypatch, **kw)
+        plain = _build(src, n, True, monkeypatch, **kw)
+        assert len(g.bsplines) == 2
+        assert g.join_angle < 1e-12                         # 2e-5 .. 2e-4 rad before
+        assert plain.join_angle > 1e-8
+        assert "(G1, not G2 there)" in g.g2_summary()
+        a, b = g.bsplines
+        ta, tb = _end_tangent(a, -1), _end_tangent(b, 0)
+        assert abs(ta[0] * tb[1] - ta[1] * tb[0]) < 1e-12
+        if not kw:          # the curve's tangent at the inflection, to rounding (samples:
+            s_i = el.affine.elastica_inflections(c)[0]      # the nearest sample's)
+            t_src = np.array([math.cos(c.angle(s_i)), math.sin(c.angle(s_i))])
+            assert abs(ta[0] * t_src[1] - ta[1] * t_src[0]) < 1e-9
+        assert g.deviation <= plain.deviation * (1 + 1e-9)
+        assert g.inflection_tangent_error < 1e-9
+        # curvature of opposite signs either side, small against the source's largest
+        ka, kb = a.curvature(a.knots[-1:])[0], b.curvature(b.knots[:1])[0]
+        assert ka * kb < 0 and max(abs(ka), abs(kb)) < 0.15 * kmax
+        # 7 edges a piece or more (x_{m-1}, x_{m-2} slid): the uniform end's curvature kept,
+        # the jump the plain build's; 6 (n = 12, x_{m-1} alone): ~6 % larger
+        ratio = g.join_curvature_jump / plain.join_curvature_jump
+        assert (abs(ratio - 1) < 1e-9) if n > 12 else (1 < ratio < 1.1), ratio
+        # no bump inside: |kappa| falls toward the inflection over the last spans, as before
+        for bs, tail in ((a, slice(-4, None)), (b, slice(0, 4))):
+            K = bs.knots[tail]
+            u = np.linspace(K[0], K[-1], 400)
+            k = np.abs(bs.curvature(u))
+            k = k if tail.start == -4 else k[::-1]
+            assert np.all(np.diff(k) <= 1e-12 * kmax), n
+
+
+@pytest.mark.parametrize("i", range(12))
+def test_joints_held_never_worse_than_plain(i, monkeypatch):
+    c = _s_curve(i)
+    for n in (12, 24, 48, 96):
+        try:
+            g = _build(c, n, False, monkeypatch)
+        except (ValueError, ArithmeticError):
+            with pytest.raises((ValueError, ArithmeticError)):
+                _build(c, n, True, monkeypatch)
+            continue
+        plain = _build(c, n, True, monkeypatch)
+        assert len(g.bsplines) == len(plain.bsplines)
+        assert g.deviation <= plain.deviation * (1 + 1e-6)
+        # both ends held (G1) or neither (the plain build's angle)
+        assert g.join_angle < 1e-12 or g.join_angle == plain.join_angle
+        # G2 inside every piece, as before (rounding grows with the offset: 5e5, 5e6)
+        assert g.curvature_jump <= max(1e-8, 10 * plain.curvature_jump), plain.curvature_jump
+        # a piece without inflections: bit-identical to the plain build
+        if len(g.bsplines) == 1:
+            assert np.array_equal(g.bsplines[0].poles, plain.bsplines[0].poles)
+
+
+def test_a_joint_whose_hold_strays_is_left_as_it_was(monkeypatch):
+    """A batten through 7 points (tension 0.001) at 24 edges: its inflection leaves a piece of
+    15 edges whose held end strays 0.376 from the source against 0.269 for the splines: both
+    ends are left as they were (one alone turns them apart otherwise: 0.79 deg, 0.97 plain)."""
+    pts = np.array([[1500.0, -804.972], [1550, -773.255], [1600, -757.801], [1650, -775.782],
+                    [1700, -809.96], [1750, -845.605], [1800, -825.555]])
+    sp = el.elastic_spline(pts, tension=0.001)
+    g = _build(sp, 24, False, monkeypatch, partial=True)
+    plain = _build(sp, 24, True, monkeypatch, partial=True)
+    assert len(g.bsplines) == 2
+    assert g.join_angle == plain.join_angle and g.join_angle > 1e-3
+    assert g.deviation == plain.deviation
+    for a, b in zip(g.bsplines, plain.bsplines):
+        assert np.array_equal(a.poles, b.poles)
