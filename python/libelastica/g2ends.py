@@ -488,17 +488,26 @@ def _held_joints(points: np.ndarray, piece_start, ends: np.ndarray, ends_dir) ->
     the source's tangent there (_joint_end: the pieces then meet G1, QA gui F3), for the
     joints where both pieces have JOINT_HOLD_EDGES edges or more and both find a place; held
     only so, since one side held alone can turn the two farther apart (0.39 deg against 0.26
-    at 12 edges of an S). ``ends_dir`` None (point data without tangents): none."""
+    at 12 edges of an S). ``ends_dir`` None (point data without tangents): the two uniform
+    ends' mean tangent there, the one both then hold (G1 needs only one tangent)."""
     held = {}
-    if ends_dir is None:
-        return held
     for j in range(1, len(piece_start) - 1):
         a, m, b = piece_start[j - 1], piece_start[j], piece_start[j + 1]
         if min(m - a, b - m) < JOINT_HOLD_EDGES:
             continue
-        left = _joint_end(points[a:m + 1], ends[j - 1], ends[j], ends_dir[j], 1)
+        T = None if ends_dir is None else ends_dir[j]
+        if T is None:
+            try:
+                bl = g2_bspline(points[a:m + 1], ends[j - 1], ends[j])
+                br = g2_bspline(points[m:b + 1], ends[j], ends[j + 1])
+            except DomainError:
+                continue
+            tl, tr = bl.derivative(bl.knots[-1:])[0], br.derivative(br.knots[:1])[0]
+            T = tl / np.hypot(*tl) + tr / np.hypot(*tr)
+            T = T / np.hypot(*T)
+        left = _joint_end(points[a:m + 1], ends[j - 1], ends[j], T, 1)
         right = None if left is None else _joint_end(points[m:b + 1], ends[j], ends[j + 1],
-                                                     ends_dir[j], 0)
+                                                     T, 0)
         if right is not None:
             held[j] = (left, right)
     return held

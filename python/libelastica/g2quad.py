@@ -421,11 +421,12 @@ def g2_quadratic(curve_or_points, n: int, samples_per_vertex: int = 20, tangents
     joint, unless that spline strays farther from the source (then the curvature alone, a
     k = 1.5 loop at 12 edges); the curvature then departs up to ~10 % from an arc's just
     inside the ends (7.4 % with the curvature alone).
-    Where two pieces meet (an inflection) and the tangents are known, both ends hold the
-    source's tangent there (g2ends._joint_end: x_1, x_2 slid keeping the uniform end's
-    curvature; x_1 alone at 5 or 6 edges), so the pieces meet G1 (they were O(edge) apart:
-    0.0037 deg at 24 edges of an S), unless a piece has fewer than 5 edges or the splines
-    would stray farther from the source (both ends or neither). Not G2: no G2 quadratic
+    Where two pieces meet (an inflection) both ends hold the source's tangent there (point
+    data without tangents: the two uniform ends' mean one; g2ends._joint_end: x_1, x_2 slid
+    keeping the uniform end's curvature, x_1 alone at 5 or 6 edges), so the pieces meet G1
+    (they were O(edge) apart: 0.0037 deg at 24 edges of an S), unless a piece has fewer
+    than 5 edges or the splines would stray farther from the source (both ends or neither;
+    inflection_tangent_error, join_angle: what is left). Not G2: no G2 quadratic
     ends with the inflection's curvature 0; a smaller end curvature than the uniform end's
     is reached only through a bump in the curvature just inside.
     Far from (0, 0) (survey coordinates) it builds the source moved by a local origin

@@ -113,3 +113,20 @@ def test_a_joint_whose_hold_strays_is_left_as_it_was(monkeypatch):
     assert g.deviation == plain.deviation
     for a, b in zip(g.bsplines, plain.bsplines):
         assert np.array_equal(a.poles, b.poles)
+
+
+@pytest.mark.parametrize("n", [12, 24, 48, 200])
+def test_points_without_tangents_meet_g1_on_the_mean_tangent(n, monkeypatch):
+    """Samples without tangents (the CLI's CSV): no source tangent to hold, so both ends hold
+    the mean of the two uniform ends' tangents (0.04 deg apart at 24 edges before), the joint
+    curvature jump and the deviation as the plain build's."""
+    t = np.linspace(0, 1, 400)
+    for P in (QA_S.points(np.linspace(0, QA_S.length, 20 * n + 1)),
+              np.c_[100 * t, 20 * np.sin(2 * np.pi * t)]):
+        g = _build(P, n, False, monkeypatch, partial=True)
+        plain = _build(P, n, True, monkeypatch, partial=True)
+        assert len(g.bsplines) == 2 and plain.join_angle > 1e-7
+        assert g.join_angle < 1e-12 and g.inflection_tangent_error is None
+        assert g.deviation <= plain.deviation * (1 + 1e-9)
+        assert g.join_curvature_jump <= plain.join_curvature_jump * 1.01
+        assert g.curvature_jump < 1e-9
