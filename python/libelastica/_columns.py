@@ -14,13 +14,39 @@ from typing import List, Optional
 import numpy as np
 
 # a coordinate column's name: x, Y, "z [mm]", "x (mm)" (a CSV header's too: io.py)
-AXIS_NAME = re.compile(r"\s*([xyzXYZ])\s*(?:[\[(].*[\])])?\s*")
+AXIS_NAME = re.compile(r"\s*([xyzXYZ])\s*(?:[\[(](.*)[\])])?\s*")
+# a header's length unit, as the DXF's $INSUNITS names it (io.DXF_UNITS) where it is one of
+# those; other words in brackets ('x (Länge)', 'y [east]') name no unit
+_UNIT_ALIASES = {"µm": "um", "μm": "um", "micron": "um", "inch": "in", "inches": "in",
+                 "foot": "ft", "feet": "ft", "metre": "m", "meter": "m", "metres": "m",
+                 "meters": "m", **{u: u for u in ("nm", "um", "mm", "cm", "dm", "m", "km", "in",
+                                                  "ft", "yd", "mi", "px", "pt")}}
 
 
 def axis_of(label) -> Optional[str]:
     """'x', 'y' or 'z' for a column name that names that coordinate, else None."""
     m = AXIS_NAME.fullmatch(label) if isinstance(label, str) else None
     return m.group(1).lower() if m else None
+
+
+def header_unit(labels, name: str = "points") -> Optional[str]:
+    """The length unit the coordinate columns among ``labels`` name ('mm' for "x [mm],y [mm]",
+    "X (MM)"; io.DXF_UNITS' spelling where it is one of those: 'um' for 'µm', 'in' for
+    'inch'; else km, nm, dm, yd, mi, px, pt), None where none names one (a word that is no
+    unit, 'x (Länge)', names none). Columns naming two units raise
+    ValueError naming both (``name`` the input's)."""
+    units = {}
+    for label in labels:
+        m = AXIS_NAME.fullmatch(label) if isinstance(label, str) else None
+        if m and m.group(2) and m.group(2).strip():
+            u = _UNIT_ALIASES.get(m.group(2).strip().lower())
+            if u:
+                units.setdefault(u, label)
+    if len(units) > 1:
+        (a, la), (b, lb) = list(units.items())[:2]
+        raise ValueError(f"{name}: the columns name two units, {a!r} ({la!r}) and {b!r} "
+                         f"({lb!r}): give the coordinates in one unit")
+    return next(iter(units), None)
 
 
 def column_labels(a) -> Optional[List]:

@@ -24,13 +24,13 @@ from ._entry import INTERRUPTED
 from ._interrupt import end_if_a_call_runs, interruptible
 from .cli_common import (ANGLE_UNITS, EXIT_BADINPUT, EXIT_INTERNAL, EXIT_NOCONV, EXIT_OK, PROG,
                          _finite, _input_map, _mapped_bspline, _table, angle, holding_advice,
-                         said_warnings, thousands, thousands_option, tol_option)
+                         dxf_units, said_warnings, thousands, thousands_option, tol_option)
 from .cli_fit import cmd_fit, fit_constraints
 from .cli_g2quad import cmd_g2quad
 from .cli_hermite import cmd_hermite
 from .cli_outputs import Outputs, check_outputs
 from .io import (DXF_UNITS, InputError, curve_from_dict, curve_to_dict, read_json,
-                 read_points, write_dxf_spline, write_json)
+                 read_points_unit, write_dxf_spline, write_json)
 
 FIT_EXAMPLES = """examples:
   elastica fit points.csv --svg fit.svg --json fit.json
@@ -330,7 +330,8 @@ def cmd_spline(args) -> int:
     import libelastica as el
     from .io import bspline_to_dict
     from .report import curves_picture, save_picture
-    pts = read_points(args.file, min_points=2, thousands=thousands(args))
+    pts, unit = read_points_unit(args.file, min_points=2, thousands=thousands(args))
+    units = dxf_units(args.file, unit, args) if args.dxf else None
     if pts.shape[1] != 2:
         raise InputError(f"{args.file}: an elastic spline needs 2 columns (x, y), got 3")
     kw = {"tension": args.tension} if args.length is None else {"length": args.length}
@@ -372,7 +373,7 @@ def cmd_spline(args) -> int:
     if need_b:
         with tol_option("--bspline-tol"):    # None: 1e-6 of the spline's length
             b = sp.to_bspline(args.bspline_tol, args.degree)
-    rec = {"file": args.file, "points": sp.data.tolist(), "closed": sp.closed, **kw,
+    rec = {"file": args.file, "unit": unit, "points": sp.data.tolist(), "closed": sp.closed, **kw,
            "tension": sp.tension, "length": sp.length, "energy": sp.energy,
            "max_curvature": sp.max_curvature, "residual": sp.residual, "loops": sp.loops,
            "unstable": sp.unstable,
@@ -390,7 +391,7 @@ def cmd_spline(args) -> int:
         print(f"B-spline: degree {b.degree}, {len(b.poles)} poles, certified within "
               f"{b.max_deviation:.3g}")
     if args.dxf:
-        write_dxf_spline(b, args.outputs.path(args.dxf), points=sp.data, units=args.units,
+        write_dxf_spline(b, args.outputs.path(args.dxf), points=sp.data, units=units,
                          closed=sp.closed)
     for spec in (args.svg, args.png):
         if spec:

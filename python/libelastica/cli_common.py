@@ -227,3 +227,17 @@ def holding_advice(said: str, pts, ends, closed) -> str:
             f"a fair spline that holds (length {sp.length:.6g}, {sp.length / polygon:.3g} x the "
             f"polygon), the least of {ladder_words(4)} / polygon^2 that neither loops nor is "
             "an unstable equilibrium (a smaller one may: a real batten bent so would snap)")
+
+
+def dxf_units(path, unit: Optional[str], args) -> str:
+    """The DXF's $INSUNITS (a key of io.DXF_UNITS) for a file whose header names ``unit``
+    (io.read_points_unit; None: none): --units where given ('none' too: an untagged
+    drawing), else the header's where DXF has it, else 'none'. A --units naming another
+    unit than the header's of ``path`` (``args`` the command's) is an InputError naming both."""
+    from .io import DXF_UNITS
+    given = getattr(args, "units_given", getattr(args, "units", None))
+    if given not in (None, "none") and unit in DXF_UNITS and unit != given:
+        raise InputError(f"{path}: --units {given} but its header gives the coordinates in "
+                         f"{unit}: drop --units (the header's {unit} tags the DXF) or fix "
+                         "the header")
+    return given if given is not None else unit if unit in DXF_UNITS else "none"

@@ -14,14 +14,14 @@ from ._ffi import ElasticaError, NotConvergedError
 from ._text import curve_values
 from .cli_common import (ANGLE_UNITS, EXIT_BADINPUT, EXIT_INTERNAL, EXIT_NOCONV, EXIT_OK, PROG,
                          _converged, _finite, _float_list, _fmt, _mapped_bspline, _plane_record,
-                         _Progress, _status_text, _table, angle, thousands,
+                         _Progress, _status_text, _table, angle, dxf_units, thousands,
                          tol_option)
 from .cli_outputs import out_path
 from .fit import quiet_fit
 from .misfit import _fit_outliers
 from .fit_cost import cost_summary, costly, end_costs, held_ends, local_cost_summary
 from .order import order_summary
-from .io import InputError, curve_to_dict, read_points, write_dxf_spline, write_json
+from .io import InputError, curve_to_dict, read_points_unit, write_dxf_spline, write_json
 
 
 def _parse_fix(spec: Optional[str], data: np.ndarray, keyline: bool = False) -> Dict[str, float]:
@@ -422,7 +422,8 @@ def fit_file(path: str, args, batch: bool) -> Tuple[List[Dict[str, Any]], Dict[s
     file's JSON document (the record; a keyline's {"file", "sides", "bspline"}), and
     writes the requested outputs. Raises InputError / ValueError for bad input."""
     import libelastica as el
-    pts = read_points(path, min_points=4, thousands=thousands(args))
+    pts, unit = read_points_unit(path, min_points=4, thousands=thousands(args))
+    units = dxf_units(path, unit, args) if args.dxf else None   # (before any fit)
     pts, order = _in_order(path, pts, getattr(args, "order", "given"))
     records: List[Dict[str, Any]] = []
     pictures = []       # (points (n,2), FitResult, their feet or None: the fit's) per record
@@ -515,7 +516,8 @@ def fit_file(path: str, args, batch: bool) -> Tuple[List[Dict[str, Any]], Dict[s
             pictures.append((data, res, None))
             fitted.append(data)
     for rec, fitted_pts in zip(records, fitted):
-        rec.update({"file": str(path), "plane": plane, "step": args.step, **extra_info})
+        rec.update({"file": str(path), "unit": unit, "plane": plane, "step": args.step,
+                    **extra_info})
         gap = rec.get("wander_gap", -1)      # in the fit's order, as fitted_pts
         if order is not None:
             rec["order"] = [int(i) for i in order]
@@ -533,7 +535,8 @@ def fit_file(path: str, args, batch: bool) -> Tuple[List[Dict[str, Any]], Dict[s
             print(f"{PROG} fit: warning: {path}: " + resample_summary(
                 args.step, rec["rms"], rec["resample_reference_rms"],
                 extent=float(np.ptp(fitted_pts, axis=0).max())), file=sys.stderr)
-    doc = records[0] if len(records) == 1 else {"file": str(path), "sides": records}
+    doc = records[0] if len(records) == 1 else {"file": str(path), "unit": unit,
+                                                "sides": records}
     splines = []
     if args.bspline_tol is not None or args.dxf:
         tol = args.bspline_tol      # > 0: the parser's; None: 1e-6 of the curve's length
@@ -558,13 +561,14 @@ def fit_file(path: str, args, batch: bool) -> Tuple[List[Dict[str, Any]], Dict[s
         if to_input is not None and not args.keyline:
             doc["bspline_local"] = splines[0].to_dict()
     splines = mapped
-    _write_fit_outputs(path, args, batch, doc, records, pictures, splines, pts)
+    _write_fit_outputs(path, args, batch, doc, records, pictures, splines, pts, units)
     return records, doc
 
 
-def _write_fit_outputs(path, args, batch, doc, records, pictures, splines, points) -> None:
+def _write_fit_outputs(path, args, batch, doc, records, pictures, splines, points,
+                       units) -> None:
     """JSON, pictures (in the fit's plane coordinates) and DXF (splines and points in the
-    input's coordinates) of one file."""
+    input's coordinates, its $INSUNITS ``units``: dxf_units) of one file."""
     from .report import fit_picture, save_picture
     jpath = out_path(args.json, path, ".json", batch) if args.json and args.json != "-" and not (
         batch and args.json.endswith(".json") and "{stem}" not in args.json) else None
@@ -608,11 +612,12 @@ def _write_fit_outputs(path, args, batch, doc, records, pictures, splines, point
         save_picture(pic, args.outputs.path(out))
     if args.dxf and splines:
         write_dxf_spline(splines, args.outputs.path(out_path(args.dxf, path, ".dxf", batch)),
-                         points=points, units=args.units)
+                         points=points, units=units)
 
 
 def _print_fit(rec: Dict[str, Any]) -> None:
-    print(f"file        {rec['file']}")
+    u = f" {rec['unit']}" if rec.get("unit") else ""     # the header's (QA qapy F3)
+    print(f"file        {rec['file']}" + (f"   (coordinates in{u}: its header)" if u else ""))
     if rec.get("plane"):
         n = np.asarray(rec["plane"]["normal"])
         print(f"3D input    plane fit: normal ({n[0]:.4g}, {n[1]:.4g}, {n[2]:.4g}), "
@@ -633,8 +638,8 @@ def _print_fit(rec: Dict[str, Any]) -> None:
         else:
             how = {"orthogonal": "point-to-curve distances",
                    "paired": "point-to-curve distances; fitted paired"}.get(rec.get("distance"), "")
-        print(f"rms         {_fmt(rec['rms'])}" + (f"   ({how})" if how else ""))
-        print(f"max error   {_fmt(rec['max_error'])}")
+        print(f"rms         {_fmt(rec['rms'])}{u}" + (f"   ({how})" if how else ""))
+        print(f"max error   {_fmt(rec['max_error'])}{u}")
         print(f"iterations  {rec['iterations']}")
         _print_uncertainty(rec)
     if rec.get("bspline"):
@@ -675,7 +680,9 @@ def cmd_fit(args) -> int:
             if len(recs) > 1:       # a keyline: the file's own points to the whole curve
                 print()
                 r = recs[0]
-                print(f"keyline     rms {_fmt(r['input_rms'])}, max error {_fmt(r['input_max_error'])}"
+                u = f" {r['unit']}" if r.get("unit") else ""
+                print(f"keyline     rms {_fmt(r['input_rms'])}{u}, max error "
+                      f"{_fmt(r['input_max_error'])}{u}"
                       f"   (the file's {r['input_points']} points to the keyline, in its plane)")
                 if doc.get("bspline"):
                     _print_bspline(doc["bspline"], "of the keyline: ")

@@ -10,9 +10,9 @@ import warnings
 import numpy as np
 
 from ._text import coordinates
-from .cli_common import EXIT_OK, PROG, _plane_record, thousands
+from .cli_common import EXIT_OK, PROG, _plane_record, dxf_units, thousands
 from .io import (InputError, curve_from_dict, curve_to_dict, looks_like_json, read_input,
-                 read_json, read_points, write_dxf_spline, write_json)
+                 read_json, read_points_unit, write_dxf_spline, write_json)
 
 __all__ = ["cmd_g2quad"]
 
@@ -32,6 +32,7 @@ def cmd_g2quad(args) -> int:
     given = read_input("-") if args.file == "-" else None
     if args.file.lower().endswith(".json") or (given is not None and looks_like_json(given)):
         doc = read_json(args.file, data=given)
+        unit = doc.get("unit") if isinstance(doc, dict) else None    # a fit's: its header's
         items = doc.get("sides") if isinstance(doc, dict) and "sides" in doc else [doc]
         if len(items) != 1:
             raise InputError(f"{args.file}: {len(items)} curves; give one (e.g. one side's JSON)")
@@ -43,7 +44,8 @@ def cmd_g2quad(args) -> int:
         data = curve.points(np.linspace(0.0, curve.length, 400)) if curve_source else src
         n = args.edges or 40
     else:
-        pts = read_points(args.file, min_points=4, data=given, thousands=thousands(args))
+        pts, unit = read_points_unit(args.file, min_points=4, data=given,
+                                     thousands=thousands(args))
         if pts.shape[1] == 3:
             src, frame = el.plane_fit(pts)
             plane = _plane_record(frame)
@@ -72,7 +74,8 @@ def cmd_g2quad(args) -> int:
         else:                                                 # as before: Python's own
             warnings.showwarning(w.message, w.category, w.filename, w.lineno)
     jumps = f"{g.curvature_jump:.2g}"
-    rec = {"file": str(source), "edges": int(n), "pieces": len(g.bsplines), "plane": plane,
+    units = dxf_units(args.file, unit, args) if args.dxf else None
+    rec = {"file": str(source), "unit": unit, "edges": int(n), "pieces": len(g.bsplines), "plane": plane,
            "ends": g.ends, "covers_source": g.covers_source, "ends_covered": g.ends_covered,
            "deviation": g.deviation,
            # "end_tangent_error_rad": the source's ends', what the report's 'end tangents'
@@ -143,7 +146,7 @@ def cmd_g2quad(args) -> int:
     if args.dxf:
         splines = g.bsplines if frame is None else [
             BSpline(b.degree, frame.to_3d(b.poles), b.knots, b.mults) for b in g.bsplines]
-        write_dxf_spline(splines, args.outputs.path(args.dxf), units=args.units)
+        write_dxf_spline(splines, args.outputs.path(args.dxf), units=units)
     return EXIT_OK
 
 

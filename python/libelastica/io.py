@@ -18,9 +18,10 @@ from typing import Any, Dict, Optional, Union
 
 import numpy as np
 
-from ._columns import axis_columns
+from ._columns import axis_columns, header_unit
 
-__all__ = ["InputError", "read_input", "looks_like_json", "read_points", "curve_to_dict",
+__all__ = ["InputError", "read_input", "looks_like_json", "read_points", "read_points_unit",
+           "curve_to_dict",
            "curve_from_dict", "bspline_to_dict", "bspline_from_dict", "write_json", "read_json",
            "write_dxf_spline", "have_ezdxf", "DXF_UNITS"]
 
@@ -78,7 +79,7 @@ def _split_fields(lines, delim: Optional[str], name: str) -> list:
         raise InputError(f"{name}: line {reader.line_num}: {exc}") from None
 
 
-def _parse_text(text: str, name: str, thousands: Optional[str] = None) -> np.ndarray:
+def _parse_text(text: str, name: str, thousands: Optional[str] = None) -> tuple:
     """Rows of numbers separated by semicolons, tabs or spaces (with decimal commas or
     points), or commas (decimal commas quoted, as spreadsheets write them: "1,5","0,25").
     Blank lines and lines starting with '#' are skipped, and a '#' comment after a row's
@@ -90,7 +91,8 @@ def _parse_text(text: str, name: str, thousands: Optional[str] = None) -> np.nda
     when the header names the coordinate columns ``x``, ``y`` and optionally ``z`` (units in
     brackets allowed); a header that names them picks them by name in any case ("id,x,y",
     "y,x", "name,x,y,z"), the other columns need not be numbers. Thousands grouped by '.'
-    (:func:`_thousands`) are read as such in ';' and tab separated files that show it."""
+    (:func:`_thousands`) are read as such in ';' and tab separated files that show it.
+    Returns the points and the unit the header names them in (None: _columns.header_unit)."""
     rows = []       # (line number, fields)
     header = None
     lines = [_uncommented(ln) for ln in text.splitlines()]     # (a line number per line)
@@ -182,7 +184,10 @@ def _parse_text(text: str, name: str, thousands: Optional[str] = None) -> np.nda
     if named is None and width > 3:
         raise InputError(f"{name}: {width} columns: name the coordinates x, y (and z) "
                          f"in a header line to read them from more columns, or give 2 or 3{hint}")
-    return out
+    try:
+        return out, header_unit([header[i] for i in named], name) if named else None
+    except ValueError as exc:
+        raise InputError(str(exc)) from None
 
 
 def _convert(rows, cols, named: bool, name: str) -> np.ndarray:
@@ -511,7 +516,8 @@ def looks_like_json(data: bytes) -> bool:
 
 def read_points(path: PathLike, min_points: int = 3, data: Optional[bytes] = None,
                 thousands: Optional[str] = None) -> np.ndarray:
-    """Read an (n, 2) or (n, 3) float64 array of points from ``path``.
+    """Read an (n, 2) or (n, 3) float64 array of points from ``path`` (and the unit its
+    header names: :func:`read_points_unit`).
 
     Formats: ``.npy`` (a numeric array of shape (n, 2) or (n, 3)), otherwise text
     with comma (decimal commas quoted), semicolon, tab or whitespace (decimal commas
@@ -543,6 +549,16 @@ def read_points(path: PathLike, min_points: int = 3, data: Optional[bytes] = Non
     file (and ``'.'`` or ``''`` a comma as a decimal comma). Fields may be quoted between
     commas, tabs or spaces (``"1.5" "2.5"``).
     """
+    return read_points_unit(path, min_points, data, thousands)[0]
+
+
+def read_points_unit(path: PathLike, min_points: int = 3, data: Optional[bytes] = None,
+                     thousands: Optional[str] = None) -> tuple:
+    """(points, unit): :func:`read_points`' points of ``path`` (``min_points``, ``data``,
+    ``thousands`` as there) and the unit the header line names the coordinate columns in
+    ('mm' for ``x [mm],y [mm]``; DXF_UNITS' spelling where it is one of those: 'um' for
+    'µm'), None where it names none (and for .npy). Columns naming two units
+    (``x [mm],y [m]``) raise :class:`InputError` naming both."""
     name = "standard input" if str(path) == "-" else str(path)
     data = read_input(path) if data is None else data
     if data.startswith(_NPY_MAGIC) or (str(path) != "-" and Path(path).suffix.lower() == ".npy"):
@@ -552,9 +568,9 @@ def read_points(path: PathLike, min_points: int = 3, data: Optional[bytes] = Non
             raise InputError(f"{name}: not a readable .npy file ({exc})") from None
         if not np.issubdtype(arr.dtype, np.number):
             raise InputError(f"{name}: .npy array is not numeric (dtype {arr.dtype})")
-        arr = np.asarray(arr, dtype=np.float64)
+        arr, unit = np.asarray(arr, dtype=np.float64), None
     else:
-        arr = _parse_text(_decode(data, name), name, thousands)
+        arr, unit = _parse_text(_decode(data, name), name, thousands)
     if arr.ndim != 2 or arr.shape[1] not in (2, 3):
         raise InputError(f"{name}: need 2 or 3 columns (x,y or x,y,z), got shape {arr.shape}")
     if not np.all(np.isfinite(arr)):
@@ -564,7 +580,7 @@ def read_points(path: PathLike, min_points: int = 3, data: Optional[bytes] = Non
         raise InputError(f"{name}: need at least {min_points} points, got {arr.shape[0]}")
     if np.all(arr == arr[0]):
         raise InputError(f"{name}: all points are equal")
-    return np.ascontiguousarray(arr)
+    return np.ascontiguousarray(arr), unit
 
 
 # ---------------------------------------------------------------- JSON
