@@ -33,7 +33,7 @@ from .cubic import SPARSE_POINTS, SparseWarning, smooth_fits_better
 from ._text import LengthFormat, lengths
 from ._values import ValueEquality
 from .fit_cost import EndConditionWarning, checked_ends
-from .fit_input import explain_input_status
+from .fit_input import explain_input_status, require_distinct
 from .misfit import (MISFIT_RATIO, MisfitWarning, OutlierWarning, _Figures, _places, _verdict,
                      _warn_outliers, misfit_summary)
 from .fit_retrace import retrace_gate
@@ -604,8 +604,7 @@ def _fit(points, model: str = "discrete", fixed: Optional[Mapping[str, float]] =
                          "points[:, :2]")
     pts = checked_points(pts, "points", 2)
     n = pts.shape[0]
-    if n < 4:
-        raise ValueError(f"fit: need at least 4 points, got {n}")
+    require_distinct(pts)       # 4 or more, repeats counted once (QA qapy F6)
     if order not in ("given", "curve"):
         raise ValueError(f"fit: order must be 'given' or 'curve', got {order!r}")
     idx, unordered = None, None

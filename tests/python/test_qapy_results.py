@@ -1,0 +1,59 @@
+"""What a Python user with measured curves reads in the results (QA qapy F6, F7, F8, F10 to
+F13): a message for points that repeat, each figure named by the curve it is to, a keyline
+side in the file's frame, a B-spline's unknown deviation that reads as none, a string
+column named, and an SVG without matplotlib."""
+from __future__ import annotations
+
+import json
+import math
+import subprocess
+import sys
+import warnings
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+import libelastica as el
+from cli_run import cli
+from fit_data import polygon_distances, uneven_scan
+from libelastica.io import read_points
+
+EX = Path(__file__).resolve().parents[2] / "examples"
+
+
+@pytest.mark.parametrize("model", ["discrete", "smooth"])
+def test_two_distinct_points_in_five_rows_are_refused_as_too_few(model):
+    """[0, 0] then 4 x [1, 1] raised SingularError 'singular or degenerate input', [0, 0],
+    [1, 1] alternating 'fitted' a curve of rms 4e-14: both now as [[0, 0], [1, 1]] is, a
+    ValueError saying how many distinct points there are and which rows repeat."""
+    cases = {((0, 0), (1, 1), (1, 1), (1, 1), (1, 1)):
+             "only 2 distinct points in 5 (points 2 to 4 repeat point 1, (1, 1)): need at least 4",
+             ((0, 0), (1, 1), (0, 0), (1, 1), (0, 0)):
+             "only 2 distinct points in 5 (points 2, 4 repeat point 0, (0, 0); point 3 repeats "
+             "point 1, (1, 1)): need at least 4",
+             ((0, 0), (1, 1), (2, 0.5), (2, 0.5), (1, 1), (0, 0)):
+             "only 3 distinct points in 6 (point 5 repeats point 0, (0, 0); point 4 repeats "
+             "point 1, (1, 1); point 3 repeats point 2, (2, 0.5)): need at least 4"}
+    for pts, said in cases.items():
+        with pytest.raises(ValueError) as exc:
+            el.fit(np.array(pts, dtype=float), model=model)
+        assert str(exc.value) == f"fit: {said}"
+        assert not isinstance(exc.value, el.ElasticaError)     # as 'need at least 4 points'
+    with pytest.raises(ValueError, match=r"^fit: need at least 4 points, got 2$"):
+        el.fit(np.array([[0.0, 0.0], [1.0, 1.0]]), model=model)
+    with pytest.raises(el.SingularError, match="all points are equal"):
+        el.fit(np.ones((5, 2)), model=model)
+    # 4 distinct among repeats still fit
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", el.SparseWarning)
+        r = el.fit(np.array([[0, 0], [0, 0], [1, 0.5], [2, 0.8], [3, 0.9], [3, 0.9]], float),
+                   model=model)
+    assert r.curve is not None
+
+
+def test_the_cli_says_the_repeats_of_a_file(tmp_path, capsys):
+    path = tmp_path / "dup5.csv"
+    path.write_text("0,0\n1,1\n1,1\n1,1\n1,1\n")
+    code, _, err = cli(capsys, "fit", path)
+    assert code == 2 and "only 2 distinct points in 5 (points 2 to 4 repeat point 1" in err, err
