@@ -76,7 +76,8 @@ class FitResult(ValueEquality, Uncertain):
     its direction of travel at the point's foot, - right; ``np.abs`` for the plain
     distances; smooth: the curve over [0, length]; discrete: the polygon of its vertices);
     ``foot_s`` (n,): arc length along the curve of each point's nearest point;
-    ``rms`` / ``max_error``: from ``distances`` (input units); ``distance``:
+    ``rms`` / ``max_error``: from ``distances`` (input units), to ``curve`` (a discrete
+    one's polygon, not its exported cubic: :meth:`cubic_distances`); ``distance``:
     "orthogonal" (what was minimised: the points' distances to the curve / polygon)
     or "paired" (point i <-> vertex i, seed 000 (4.6), the discrete default on equally
     spaced points; or the smooth paired arc lengths); ``iterations``; ``candidates``: the

@@ -83,7 +83,7 @@ def _closest_brute(p: np.ndarray, a: np.ndarray, d: np.ndarray) -> Tuple[np.ndar
     d2 = ex * ex + ey * ey
     i = np.argmin(d2, axis=1)
     r = np.arange(len(i))
-    return np.stack([fx[r, i], fy[r, i]], axis=1), d2[r, i]
+    return np.stack([fx[r, i], fy[r, i]], axis=1), d2[r, i], i
 
 
 _BLOCK = 64     # points per chunk and segments per block of closest_points' search
@@ -96,8 +96,9 @@ def _box_gap2(lo, hi, blo, bhi) -> np.ndarray:
     return np.sum(g * g, axis=1)
 
 
-def closest_points(points: np.ndarray, polyline: np.ndarray) -> np.ndarray:
-    """For each of ``points`` (n, 2), the closest point (n, 2) of the polyline (m, 2).
+def closest_points(points: np.ndarray, polyline: np.ndarray, segments: bool = False):
+    """For each of ``points`` (n, 2), the closest point (n, 2) of the polyline (m, 2);
+    ``segments``: and the index (n,) of the segment each lies on, as (feet, indices).
 
     Branch and bound, the same feet as trying every segment (ties to the first): points in
     chunks of 64 and segments in blocks of 64 consecutive ones, each with its bounding box;
@@ -111,13 +112,14 @@ def closest_points(points: np.ndarray, polyline: np.ndarray) -> np.ndarray:
     a, d = poly[:-1], np.diff(poly, axis=0)
     m = len(a)
     if len(p) * m <= _BLOCK * _BLOCK:
-        return _closest_brute(p, a, d)[0]
+        feet, _, seg = _closest_brute(p, a, d)
+        return (feet, seg) if segments else feet
     nb = -(-m // _BLOCK)
     b, b_ = np.minimum(poly[:-1], poly[1:]), np.maximum(poly[:-1], poly[1:])   # segment boxes
     pad = nb * _BLOCK - m
     blo = np.concatenate([b, np.repeat(b[-1:], pad, 0)]).reshape(nb, _BLOCK, 2).min(axis=1)
     bhi = np.concatenate([b_, np.repeat(b_[-1:], pad, 0)]).reshape(nb, _BLOCK, 2).max(axis=1)
-    out = np.empty_like(p)
+    out, index = np.empty_like(p), np.empty(len(p), dtype=np.intp)
     for c in range(0, len(p), _BLOCK):
         q = p[c:c + _BLOCK]
         gap = _box_gap2(q.min(axis=0), q.max(axis=0), blo, bhi)
@@ -127,8 +129,9 @@ def closest_points(points: np.ndarray, polyline: np.ndarray) -> np.ndarray:
         keep = np.nonzero(gap <= bound * (1.0 + 1e-9))[0]   # (margin: rounding of the two)
         seg = (keep[:, None] * _BLOCK + np.arange(_BLOCK)[None, :]).ravel()
         seg = seg[seg < m]
-        out[c:c + _BLOCK] = _closest_brute(q, a[seg], d[seg])[0]
-    return out
+        out[c:c + _BLOCK], _, i = _closest_brute(q, a[seg], d[seg])
+        index[c:c + _BLOCK] = seg[i]
+    return (out, index) if segments else out
 
 
 def polygon_curvature(xy: np.ndarray) -> Tuple[np.ndarray, np.ndarray]:

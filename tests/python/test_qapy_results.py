@@ -57,3 +57,33 @@ def test_the_cli_says_the_repeats_of_a_file(tmp_path, capsys):
     path.write_text("0,0\n1,1\n1,1\n1,1\n1,1\n")
     code, _, err = cli(capsys, "fit", path)
     assert code == 2 and "only 2 distinct points in 5 (points 2 to 4 repeat point 1" in err, err
+
+
+def _resampled(model):
+    xy = uneven_scan(seed=2, noise=0.3, n=300)[0]
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        return xy, el.fit_resampled(xy, 6.0, model=model)
+
+
+def test_a_resampled_fit_names_its_distance_to_its_curve():
+    """fit_resampled's discrete r.rms is to r.bspline (the cubic through the polygon), not to
+    r.curve (the polygon), whose distance el.fit's rms is: r.curve_rms, r.curve_max_error,
+    r.curve_distances() are that one (to the polygon, every segment tried), r.rms kept."""
+    xy, r = _resampled("discrete")
+    own = polygon_distances(xy, r.curve.points())          # unsigned, brute force
+    d = r.curve_distances()
+    assert np.allclose(np.abs(d), own, rtol=0, atol=1e-12 * np.ptp(xy))
+    assert r.curve_rms == pytest.approx(np.sqrt(np.mean(own ** 2)), rel=1e-12)
+    assert r.curve_max_error == pytest.approx(own.max(), rel=1e-12)
+    assert r.curve_rms != pytest.approx(r.rms, rel=1e-3)   # two figures, two names
+    # the same distance as el.fit's: a fit's own result measured as a resampled one is
+    f = el.fit(xy[::5], model="discrete")
+    same = el.ResampledFit(result=f, polygon=f.points, points=f.points, step=1.0,
+                           bspline=f.to_bspline(), distances=f.distances, feet=f.points,
+                           rms=f.rms, max_error=f.max_error)
+    assert np.allclose(same.curve_distances(), f.distances, rtol=0, atol=1e-9 * np.ptp(xy))
+    assert same.curve_rms == pytest.approx(f.rms, rel=1e-6)
+    # smooth: the B-spline within tol of the curve: the same figures
+    _, s = _resampled("smooth")
+    assert s.curve_rms == s.rms and np.array_equal(s.curve_distances(), s.distances)
