@@ -468,6 +468,9 @@ def fit_file(path: str, args, batch: bool) -> Tuple[List[Dict[str, Any]], Dict[s
         for i, res in enumerate((kres.first, kres.second)):
             rec = _side_record(res, res.points, args.model)
             rec["side"] = i
+            # the side in the file's coordinates (a 3D file's: its plane's x'y'), "curve"
+            # the x''y'' frame's it was fitted in (QA qapy F7: the report showed those alone)
+            rec["curve_input"] = curve_to_dict(kres.side_curve(("first", "second")[i]))
             if kres.ends_local is not None:   # where a discrete half ends (x''y'', as its
                 rec["end"] = [float(v) for v in kres.ends_local[i]]     # curve): `bspline` again
             records.append(rec)
@@ -631,8 +634,15 @@ def _print_fit(rec: Dict[str, Any]) -> None:
     else:
         print(f"model       {rec['model']}  ({rec['n_points']} points)")
     if rec.get("curve"):
-        # the start to the curve's size's digits (QA18 P1)
-        print("parameters  " + ", ".join(f"{k}={text}" for k, text in curve_values(rec["curve"])))
+        # the start to the curve's size's digits (QA18 P1); a keyline side's in the file's
+        # frame, its x''y'' one beside (the JSON's "curve")
+        where = ("the plane's x'y'" if rec.get("plane") else "the file's x, y")
+        for key, said in (("curve_input", f"   ({where})"), ("curve", "")):
+            if key in rec:
+                print(("parameters  " if key == "curve_input" or "curve_input" not in rec else
+                       "            ") + ", ".join(f"{k}={text}" for k, text in curve_values(
+                           rec[key])) + (said or ("   (x''y'': the keyline's PCA frame)"
+                                                  if "curve_input" in rec else "")))
         if "fitted_points" in rec:   # --step: whatever distance fitted the polygon (QA13)
             how = "point-to-curve: the file's points to the curve drawn"
         else:
@@ -640,7 +650,8 @@ def _print_fit(rec: Dict[str, Any]) -> None:
                    "paired": "point-to-curve distances; fitted paired"}.get(rec.get("distance"), "")
         print(f"rms         {_fmt(rec['rms'])}{u}" + (f"   ({how})" if how else ""))
         print(f"max error   {_fmt(rec['max_error'])}{u}")
-        print(f"iterations  {rec['iterations']}")
+        print(f"iterations  {rec['iterations']}" + ("   (the one fit of both sides)"
+                                                      if "side" in rec else ""))
         _print_uncertainty(rec)
     if rec.get("bspline"):
         _print_bspline(rec["bspline"])

@@ -87,3 +87,19 @@ def test_a_resampled_fit_names_its_distance_to_its_curve():
     # smooth: the B-spline within tol of the curve: the same figures
     _, s = _resampled("smooth")
     assert s.curve_rms == s.rms and np.array_equal(s.curve_distances(), s.distances)
+
+
+def test_the_keyline_report_prints_each_side_in_the_files_frame(capsys, tmp_path):
+    code, out, err = cli(capsys, "fit", EX / "sample_s_curve.csv", "--keyline", "--model",
+                         "smooth", "--json", tmp_path / "k.json")
+    assert code in (0, 1), err
+    doc = json.loads((tmp_path / "k.json").read_text())
+    lines = [ln for ln in out.splitlines() if ln.startswith("parameters")]
+    assert len(lines) == 2 and all(ln.endswith("(the file's x, y)") for ln in lines), out
+    assert out.count("(x''y'': the keyline's PCA frame)") == 2
+    assert out.count("(the one fit of both sides)") == 2
+    joint = doc["sides"][0]["inflection_point"]
+    for side in doc["sides"]:
+        c = side["curve_input"]
+        assert (c["x0"], c["y0"]) == pytest.approx(tuple(joint), rel=1e-9, abs=1e-9)
+        assert f"x0={c['x0']:.6g}"[:8] in out
