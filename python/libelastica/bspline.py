@@ -5,6 +5,8 @@ from __future__ import annotations
 
 from typing import Any
 
+import math
+
 import numpy as np
 
 from ._ffi import (INT_MAX, DomainError, NotConvergedError, as_degree, as_int, as_points,
@@ -57,7 +59,8 @@ def at_least(x: float) -> str:
 class BSpline(PortablePickle):
     """A non-rational B-spline curve: degree, poles (n, dim), distinct knots with
     multiplicities (FreeCAD/OpenCASCADE convention), and ``max_deviation``, the
-    certified distance to the curve it approximates (0 exact, -1 unknown).
+    certified distance to the curve it approximates (0 exact, NaN unknown: a discrete fit's
+    cubic through its vertices; -1 given, the C library's "unknown", reads NaN too).
 
     The flat knot vector has n + degree + 1 entries (:meth:`flat_knots`).
     Evaluation runs in C (de Boor); parameters outside [knots[0], knots[-1]]
@@ -68,7 +71,7 @@ class BSpline(PortablePickle):
     [[0.5, 0.5]]
     """
 
-    def __init__(self, degree: int, poles, knots, mults, max_deviation: float = -1.0):
+    def __init__(self, degree: int, poles, knots, mults, max_deviation: float = math.nan):
         self.degree = as_int(degree, "BSpline: degree", 1)
         self.poles = as_points(poles, "BSpline: poles", None)
         if self.poles.shape[1] > INT_MAX:
@@ -78,7 +81,9 @@ class BSpline(PortablePickle):
         if m.shape != self.knots.shape or np.any(m != np.round(m)) or np.any(np.abs(m) > INT_MAX):
             raise ValueError("BSpline: mults must be integers, one per knot")
         self.mults = m.astype(np.int64)
-        self.max_deviation = as_real(max_deviation, "BSpline: max_deviation", finite=False)
+        dev = math.nan if max_deviation is None else \
+            as_real(max_deviation, "BSpline: max_deviation", finite=False)
+        self.max_deviation = dev if dev >= 0 else math.nan    # (QA qapy F11: -1 read as a number)
         self._check()
         self._c()  # validates (EL_EINVAL -> ElasticaError)
 
@@ -115,7 +120,7 @@ class BSpline(PortablePickle):
         b.nknots = len(self.knots)
         b.knots = dptr(self.knots)
         b.mults = self._cmults
-        b.max_deviation = self.max_deviation
+        b.max_deviation = self.max_deviation if self.max_deviation >= 0 else -1.0   # C's unknown
         check(lib.el_bspline_check(b), "BSpline")
         return b
 
@@ -200,10 +205,10 @@ class BSpline(PortablePickle):
     @classmethod
     def from_dict(cls, d: dict[str, Any]) -> "BSpline":
         """Inverse of :meth:`to_dict`: the BSpline of its dict ``d`` (degree, poles, knots,
-        mults; max_deviation optional, -1 when absent)."""
+        mults; max_deviation optional, NaN when absent, null or -1)."""
         try:
             return cls(degree=d["degree"], poles=d["poles"], knots=d["knots"], mults=d["mults"],
-                       max_deviation=d.get("max_deviation", -1.0))
+                       max_deviation=d.get("max_deviation"))
         except KeyError as exc:
             raise ValueError(f"BSpline.from_dict: missing key {exc}") from None
 
@@ -217,7 +222,8 @@ class BSpline(PortablePickle):
         return (self.degree == other.degree and np.array_equal(self.poles, other.poles)
                 and np.array_equal(self.knots, other.knots)
                 and np.array_equal(self.mults, other.mults)
-                and self.max_deviation == other.max_deviation)
+                and (self.max_deviation == other.max_deviation      # (NaN: both unknown)
+                     or (math.isnan(self.max_deviation) and math.isnan(other.max_deviation))))
 
 
 def _c2_end(spec, name: str):

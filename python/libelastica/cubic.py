@@ -9,12 +9,12 @@ feature say in their words)."""
 from __future__ import annotations
 
 import warnings
-from typing import Optional, Tuple
+from typing import NamedTuple, Optional
 
 import numpy as np
 
-__all__ = ["SPARSE_POINTS", "SPARSE_RATIO", "SPARSE_FLOOR", "SparseWarning", "cubic_distances",
-           "smooth_fits_better"]
+__all__ = ["SPARSE_POINTS", "SPARSE_RATIO", "SPARSE_FLOOR", "SparseWarning", "CubicDistances",
+           "cubic_distances", "smooth_fits_better"]
 
 # A discrete fit of few points is a polygon of as few segments, which cannot follow a
 # curved run of points the smooth model follows (measured on 300 sparse noisy sketches of
@@ -37,6 +37,14 @@ SPARSE_RATIO = 1.5
 SPARSE_FLOOR = 1e-4
 
 
+class CubicDistances(NamedTuple):
+    """:func:`cubic_distances`' pair, by name or unpacked (QA qapy F10: a bare tuple read
+    as distances): ``feet`` (n, 2) the points' nearest points on the cubic, ``distances``
+    (n,) their signed distances (+ = left of the travel)."""
+    feet: np.ndarray
+    distances: np.ndarray
+
+
 class SparseWarning(UserWarning):
     """:func:`libelastica.fit`'s and :func:`libelastica.fit_keyline`'s warning that a
     discrete fit or keyline of fewer than SPARSE_POINTS points lies far farther from them
@@ -44,11 +52,12 @@ class SparseWarning(UserWarning):
     ``KeylineFit.sparse``): use model="smooth"."""
 
 
-def cubic_distances(result, bspline=None) -> Tuple[np.ndarray, np.ndarray]:
-    """The fitted points' nearest points (n, 2) on a discrete FitResult's exported cubic
-    (``bspline``, default ``result.to_bspline()``) and their signed distances (n,), + =
-    left of the travel: what the exported curve is from the points, where ``result.
-    distances`` are the polygon's. Searched from each point's polygon foot (the cubic runs
+def cubic_distances(result, bspline=None) -> CubicDistances:
+    """``(feet, distances)``, a :class:`CubicDistances`: the fitted points' nearest points
+    (n, 2) on a discrete FitResult's exported cubic (``bspline``, default
+    ``result.to_bspline()``) and their signed distances (n,), + = left of the travel
+    (``cubic_distances(r).distances``; ``feet, d = ...``): what the exported curve is from
+    the points, where ``result.distances`` are the polygon's. Searched from each point's polygon foot (the cubic runs
     through the vertices by chord length) and over every span that may come nearer."""
     from .core import DiscreteElastica
     from .nearest import drawn_distances
@@ -57,7 +66,7 @@ def cubic_distances(result, bspline=None) -> Tuple[np.ndarray, np.ndarray]:
                          "B-spline is within its tol of the curve its distances are to)")
     b = result.to_bspline() if bspline is None else bspline
     pts = np.ascontiguousarray(np.asarray(result.points, dtype=float)[:, :2])
-    return drawn_distances(b, pts, result.foot_s)
+    return CubicDistances(*drawn_distances(b, pts, result.foot_s))
 
 
 def smooth_fits_better(points, rms: float, constraints=None, keyline=None) -> Optional[float]:

@@ -147,7 +147,7 @@ class FitResult(ValueEquality, Uncertain):
         (default 1e-6 of its length; certified; its end points, tangents and curvatures exact, so the constraints hold
         on it); a discrete one's C2 cubic through its vertices (:func:`cubic_through`)
         with the fit's constrained end tangents and curvatures (G2 where both), natural
-        ends elsewhere (``tol`` and ``degree`` unused, ``max_deviation`` -1). That cubic
+        ends elsewhere (``tol`` and ``degree`` unused, ``max_deviation`` NaN). That cubic
         runs elsewhere than the polygon between the vertices: ``rms`` / ``max_error`` are
         the polygon's, not its (7 sketched points: 0.316 / 0.561, the cubic 0.647 / 1.487);
         :meth:`cubic_distances` measures it."""
@@ -155,8 +155,8 @@ class FitResult(ValueEquality, Uncertain):
         return fitted_bspline(self.curve, tol, degree, self.constraints)
 
     def cubic_distances(self, bspline=None):
-        """A discrete fit's points' feet on its exported cubic (:meth:`to_bspline`, or
-        ``bspline``) and their signed distances: :func:`libelastica.cubic.cubic_distances`."""
+        """``(feet, distances)`` (by name too): a discrete fit's points' feet on its exported cubic
+        (:meth:`to_bspline`, or ``bspline``), signed distances: :func:`.cubic.cubic_distances`."""
         from .cubic import cubic_distances
         return cubic_distances(self, bspline)
 

@@ -103,3 +103,23 @@ def test_the_keyline_report_prints_each_side_in_the_files_frame(capsys, tmp_path
         c = side["curve_input"]
         assert (c["x0"], c["y0"]) == pytest.approx(tuple(joint), rel=1e-9, abs=1e-9)
         assert f"x0={c['x0']:.6g}"[:8] in out
+
+
+def test_cubic_distances_are_named_and_a_discrete_cubics_deviation_is_nan():
+    xy = uneven_scan(seed=1, n=40)[0]
+    r = el.fit(xy, model="discrete")
+    cd = r.cubic_distances()
+    feet, d = cd                                   # unpacks as before
+    assert cd.feet is feet and cd.distances is d and feet.shape == (40, 2) and d.shape == (40,)
+    b = r.to_bspline()
+    assert math.isnan(b.max_deviation)             # unknown: was -1.0, read as a number
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        kl = el.fit_keyline(read_points(EX / "sample_s_curve.csv"), model="discrete")
+    assert math.isnan(kl.to_bspline(1e-4).max_deviation)
+    doc = b.to_dict()
+    assert math.isnan(doc["max_deviation"])
+    assert math.isnan(el.BSpline.from_dict({**doc, "max_deviation": None}).max_deviation)
+    assert math.isnan(el.BSpline.from_dict({**doc, "max_deviation": -1.0}).max_deviation)
+    assert el.BSpline.from_dict({**doc, "max_deviation": 0.25}).max_deviation == 0.25
+    assert np.array_equal(el.BSpline.from_dict(doc).evaluate([0.5]), b.evaluate([0.5]))
