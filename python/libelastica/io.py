@@ -248,6 +248,8 @@ def _refuse_row_numbers(rows, width: int, delim: Optional[str], name: str,
     third = [f[2] for _, f in rows]
     if all(_is_number(f) for f in third) and len({float(f) for f in third}) == 1:
         return
+    if not any(map(_is_number, third)):     # names, not y: _convert_plain says so (QA qapy F12)
+        return
     sep = {None: " ", "\t": "<TAB>"}.get(delim, delim)
     where = "in a header line above the rows" if header is None else \
         f"by the names of its header line ({(delim or ' ').join(header)!r} names no x, y)"

@@ -123,3 +123,14 @@ def test_cubic_distances_are_named_and_a_discrete_cubics_deviation_is_nan():
     assert math.isnan(el.BSpline.from_dict({**doc, "max_deviation": -1.0}).max_deviation)
     assert el.BSpline.from_dict({**doc, "max_deviation": 0.25}).max_deviation == 0.25
     assert np.array_equal(el.BSpline.from_dict(doc).evaluate([0.5]), b.evaluate([0.5]))
+
+
+def test_a_string_column_is_named_when_x_counts_the_rows(tmp_path, capsys):
+    path = tmp_path / "names.csv"
+    path.write_text("0,0,a\n1,1,b\n2,3,c\n3,3,d\n4,5,e\n")
+    code, _, err = cli(capsys, "fit", path)
+    assert code == 2
+    assert "line 1: not a number: 'a' (column 3 holds no number: names?" in err, err
+    assert "rows' numbers" not in err
+    path.write_text("0,0,1\n1,1,2\n2,3,3\n3,3,4\n4,5,7\n")       # numbers: as before
+    assert "(the rows' numbers?)" in cli(capsys, "fit", path)[2]
