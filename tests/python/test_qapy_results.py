@@ -134,3 +134,16 @@ def test_a_string_column_is_named_when_x_counts_the_rows(tmp_path, capsys):
     assert "rows' numbers" not in err
     path.write_text("0,0,1\n1,1,2\n2,3,3\n3,3,4\n4,5,7\n")       # numbers: as before
     assert "(the rows' numbers?)" in cli(capsys, "fit", path)[2]
+
+
+def test_svg_is_written_without_importing_matplotlib(tmp_path):
+    svg = tmp_path / "f.svg"
+    code = ("import sys\nfrom libelastica.cli import main\n"
+            f"c = main(['fit', {str(EX / 'sample_2d.csv')!r}, '--model', 'smooth', '--svg', "
+            f"{str(svg)!r}])\n"
+            "print(c, any(m == 'matplotlib' or m.startswith('matplotlib.') for m in sys.modules))")
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
+                         check=True, timeout=300).stdout.split()
+    assert out[-2:] == ["0", "False"], out
+    text = svg.read_text()
+    assert text.startswith("<?xml") and "<svg" in text and "<polyline" in text and "curvature" in text
