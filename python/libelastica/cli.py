@@ -216,6 +216,8 @@ def cmd_bspline(args) -> int:
         raise InputError(f"--solution {args.solution}: {args.file} is not a hermite JSON (no "
                          "solutions to choose from)")
     groups = _curve_groups(doc, args.solution or 0, args.file)
+    units = dxf_units(args.file, doc.get("unit") if isinstance(doc, dict) else None, args) \
+        if args.dxf else None       # a fit's JSON: its points file's header's (QA qapy F3)
     out, splines, names = [], [], []
     for items in groups:
         curves = [curve_from_dict(it, name=args.file) for it in items]
@@ -259,7 +261,7 @@ def cmd_bspline(args) -> int:
               f"{len(b.knots)} knots, {dev}")
     if args.dxf:
         closed = all(isinstance(it, dict) and it.get("closed") for items in groups for it in items)
-        write_dxf_spline(splines, args.outputs.path(args.dxf), units=args.units, closed=closed)
+        write_dxf_spline(splines, args.outputs.path(args.dxf), units=units, closed=closed)
     return EXIT_OK
 
 

@@ -61,6 +61,12 @@ def test_the_header_unit_shows_in_the_report_json_and_dxf(tmp_path, capsys):
     assert code == 0, err
     assert ezdxf.readfile(tmp_path / "g.dxf").header["$INSUNITS"] == 4
     assert json.loads((tmp_path / "g.json").read_text())["unit"] == "mm"
+    code, _, err = cli(capsys, "bspline", tmp_path / "s.json", "--dxf", tmp_path / "b.dxf")
+    assert code == 0, err
+    assert ezdxf.readfile(tmp_path / "b.dxf").header["$INSUNITS"] == 4
+    code, _, err = cli(capsys, "bspline", tmp_path / "s.json", "--dxf", tmp_path / "b.dxf",
+                       "--units", "m")
+    assert code == 2 and "--units m but its header gives the coordinates in mm" in err, err
 
 
 def test_a_file_without_a_unit_is_unitless_as_before(tmp_path, capsys):
