@@ -43,6 +43,15 @@
  * |f| < 1e-6). Fewer lines lose solutions: two (bottom and top) 11 of the bench's 3494 (-28 %
  * instructions); five without line 3 none of the bench's (-15 %) but make length-recovers misses
  * 10, 12, 7 (six lines: 0, 2, 0) and make hermite-sets' length sets lose 1; grid 4 misses 1, 4, 1.
+ * The trace's corrector on f alone (secant Newton along x at the predictor's tension by
+ * el__hermite_x_objective, ~740 instructions against ~1600 for a point with its gradient, then
+ * one full evaluation where it stops) does not pay either: +0.7 % instructions (+0.5 % with
+ * Carlson's qs 0.3), the same 3494 solutions; the steps are long (the slope at the step's start is
+ * off by C's bend), so the secant takes ~2.5 evaluations of f where Newton with the gradient takes
+ * ~1.4 more points. The constants are at their optimum within +-0.5 % (first 300 problems): the
+ * trace's first step 0.2 / 0.5 / 0.8 (0.3 kept) +0.1 / +0.7 / +2.5 %, the separatrix chart
+ * entered below 3e-4 / 3e-3 of |F| + sigma (1e-3 kept) +0.4 / +0.4 %, K1 past a fold ratio of
+ * 2 / 8 (4 kept) -0.2 / +0.3 %.
  */
 #include "hermite_length_internal.h"
 #include <stdlib.h>
