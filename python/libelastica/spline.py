@@ -17,7 +17,7 @@ from ._ffi import (DomainError, ElasticaError, LengthRangeError, NotConvergedErr
 from ._values import ValueEquality
 from .bspline import smooth_chain_to_bspline
 from .core import SMOOTH_PARAMS, SmoothElastica, arc_lengths, chain_eval, chain_starts
-from .spline_ends import _end, _g2_end_text, _units_problem
+from .spline_ends import UNITS_MAX, _end, _g2_end_text, _units_problem
 
 __all__ = ["DoublesBackError", "ElasticSpline", "LoopWarning", "SeamWarning", "UnstableWarning",
            "holding_tension",
@@ -619,10 +619,14 @@ def elastic_spline(points, tension: Optional[float] = None, length: Optional[flo
             for k in SMOOTH_PARAMS:
                 setattr(arr[i], k, float(getattr(p, k)))
         opt.initial, opt.ninitial = arr, len(pieces)
-    units = _units_problem(float(chords.sum()) / len(chords), opt, closed)
+    mean_chord = float(chords.sum()) / len(chords)
+    units = _units_problem(mean_chord, opt, closed)
     if units:   # el_spline_solve's EL_EDOM before any search (spline.c's UNITS); points
-        # beyond the pieces' range are said as the library's EL_EINVAL for them is
-        raise DomainError(lib.EL_EDOM, _out_of_range(pts, chords) or "elastic_spline: " + units)
+        # beyond the pieces' range are said as the library's EL_EINVAL for them is, but
+        # only where their scale is the cause: points at 1e120 solve, their tension 1 not
+        scale = not 1.0 / UNITS_MAX <= mean_chord <= UNITS_MAX
+        raise DomainError(lib.EL_EDOM, (_out_of_range(pts, chords) if scale else "")
+                          or "elastic_spline: " + units)
     places = back_steps(pts, closed)
     if len(places) >= BACK_STEPS_MANY:   # noise: refused before a solve that cannot succeed
         err = DoublesBackError(lib.EL_EDOM, (

@@ -75,7 +75,12 @@ def test_what_the_units_cannot_represent_is_refused_with_its_cause():
              (dict(points=line * 1e80, tension=1e-9), r"tension 1e-09 x \(mean chord"),
              (dict(points=line, tension=1e307), "tension"),
              (dict(points=line, length=20.0, end=g2), "end curvature"),
-             (dict(points=line, start=g2), "start curvature")]
+             (dict(points=line, start=g2), "start curvature"),
+             # points the solver represents (1e+-120 solve), the tension or curvature not:
+             # the cause named, not the points' range
+             (dict(points=line * 1e120, tension=1.0), r"tension 1 x \(mean chord"),
+             (dict(points=line * 1e-120, start={"tangent": (1.0, 0.2), "curvature": 1e275}),
+              "start curvature")]
     for kw, cause in cases:
         with pytest.raises(el.DomainError, match=cause) as e:
             el.elastic_spline(**kw)
@@ -83,3 +88,4 @@ def test_what_the_units_cannot_represent_is_refused_with_its_cause():
     # just inside: solved as any spline (the points' scale 1e150 is their mean chord)
     sp = el.elastic_spline(np.array([[0.0, 0.0], [1.0, 0.0], [1.0, 1.0]]) * 1e150)
     assert len(sp.pieces) == 2
+    assert el.elastic_spline(line * 1e120, tension=1e-245).tension == 1e-245
