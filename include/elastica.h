@@ -1518,7 +1518,8 @@ void el_spline_options_defaults(el_spline_options *opt);
  * fewer than 3 points, initial with ninitial != n - 1, closed, or a piece that
  * fails el_smooth_check or starts off its point by more than 1e-6 of its chord), EL_EDOM (length mode with length < the polygon's length;
  * before any search, what the spline's units (the mean chord S) cannot represent: S
- * outside [1e-150, 1e150], or in tension mode sigma S^2 > 1e150, or a G2 end's
+ * outside [1e-150, 1e150], or in tension mode sigma S^2 > 1e150, in length mode
+ * length / S > 1e150, or a G2 end's
  * |curvature| S > 1e150 (their squares must stay finite; spline.c's UNITS);
  * tension 0 when no free-sliding batten is found: continuation from a high
  * tension cannot reach sigma = 0, the family folds back, the batten slides off

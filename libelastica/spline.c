@@ -385,7 +385,7 @@ static int stable_instead(el__spchain *w, const double *xy, size_t n, const el_s
  * UNITS: the spline works in units of the mean chord S (lengths / S, sigma S^2, kappa S);
  * what those units cannot represent is refused before any search (EL_EDOM): S outside
  * [1e-150, 1e150] (as el_fit's extent, prep.c, and el_affine_polyline's edges), and a
- * tension sigma S^2 or a G2 end's curvature |kappa| S above UNITS_MAX. Why 1e150: the
+ * tension sigma S^2, a length L / S or a G2 end's curvature |kappa| S above UNITS_MAX. Why 1e150: the
  * pieces' equations carry the squares of these (mu = (kappa_m^2 - sigma) / 4 in the
  * internal units, the force |F| = kappa_m^2 - sigma, sigma h^2 in the pieces' starts,
  * the energy's integral kappa^2), so at 1e150 they stay within 1e300 < DBL_MAX, and
@@ -400,6 +400,9 @@ static int outside_units(const el_spline_options *opt, double S)
 {
     if (!(S >= 1.0 / UNITS_MAX && S <= UNITS_MAX)) return 1;
     if (opt->mode == EL_SPLINE_TENSION && !(opt->sigma * S * S <= UNITS_MAX)) return 1;
+    /* the length L / S too: past DBL_MAX (points at 1e-20, length 1e300) the length's
+     * equation read inf and the free batten, 1e-320 of the length, came back EL_OK */
+    if (opt->mode == EL_SPLINE_LENGTH && !(opt->length / S <= UNITS_MAX)) return 1;
     if (opt->closed) return 0;
     const el_spline_end *e[2] = {&opt->start, &opt->end};
     for (int i = 0; i < 2; i++)

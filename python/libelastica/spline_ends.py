@@ -55,8 +55,8 @@ def _g2_end_text(opt, chords) -> str:
             "try the same tangent alone (clamped) or a smaller curvature")
 
 
-# el_spline_solve's units (spline.c's UNITS): the mean chord S in [1e-150, 1e150], sigma S^2
-# and a G2 end's |curvature| S at most 1e150
+# el_spline_solve's units (spline.c's UNITS): the mean chord S in [1e-150, 1e150], sigma S^2,
+# length / S and a G2 end's |curvature| S at most 1e150
 UNITS_MAX = 1e150
 
 
@@ -69,6 +69,9 @@ def _units_problem(S, opt, closed):
     if opt.mode == lib.EL_SPLINE_TENSION and not opt.sigma * S * S <= UNITS_MAX:
         return (f"tension {opt.sigma:.4g} x (mean chord {S:.4g})^2 exceeds 1e150: no batten "
                 "the solver represents is pulled so hard")
+    if opt.mode == lib.EL_SPLINE_LENGTH and not opt.length / S <= UNITS_MAX:
+        return (f"length {opt.length:.4g} / (mean chord {S:.4g}) exceeds 1e150: no batten the "
+                "solver represents is so long against its chords")
     for name, e in (() if closed else (("start", opt.start), ("end", opt.end))):
         if e.kind == lib.EL_SPLINE_G2 and not abs(e.curvature) * S <= UNITS_MAX:
             return (f"the {name} curvature {e.curvature:.4g} x (mean chord {S:.4g}) exceeds "

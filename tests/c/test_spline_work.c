@@ -238,6 +238,34 @@ START_TEST(units_outside_are_refused_before_any_search)
 }
 END_TEST
 
+/* spline.c's UNITS in length mode: the length over the mean chord above 1e150 is refused
+ * before any search too. Five sketched points at 1e-20 asked for a length of 1e300 (L / S =
+ * 1e320, inf in the solver's units) came back EL_OK with the free batten, 4.2e-20 long; just
+ * inside (L / S = 1e150 at S = 1) the length search runs and says EL_ERANGE as before. */
+START_TEST(a_length_beyond_the_units_is_refused)
+{
+    const double base[10] = {0, 0, 1, 0.3, 2, 0.1, 3, 0.5, 4, 0.2};
+    const struct { double s, length; int st; } c[] = {
+        {1e-20, 1e300, EL_EDOM}, {1e-150, 1e200, EL_EDOM}, {1, 1.0000001, EL_EDOM}, {1, 0.9999999, EL_ERANGE},
+    };   /* at s = 1 the length in units of 1e150 x the mean chord */
+    for (size_t i = 0; i < sizeof c / sizeof c[0]; i++) {
+        double xy[10];
+        for (int k = 0; k < 10; k++) xy[k] = base[k] * c[i].s;
+        el_spline_options o;
+        el_spline_options_defaults(&o);
+        o.mode = EL_SPLINE_LENGTH;
+        double S = 0.0;
+        for (int j = 0; j < 4; j++) S += hypot(xy[2 * j + 2] - xy[2 * j], xy[2 * j + 3] - xy[2 * j + 1]) / 4.0;
+        o.length = c[i].s == 1 ? c[i].length * 1e150 * S : c[i].length;
+        el_spline_result r;
+        const int st = el_spline_solve(xy, 5, &o, &r);
+        ck_assert_msg(st == c[i].st, "case %zu: status %d (length %g), expected %d", i, st, r.length, c[i].st);
+        if (st == EL_EDOM) ck_assert(r.work == 0 && r.npieces == 0 && r.pieces == NULL);
+        el_spline_result_free(&r);
+    }
+}
+END_TEST
+
 /* Where the largest tension is looked for, its solves' work is the call's too, counted into
  * the result's work (QA16's 7 ducks with a G2 start at sigma 50, sigma h^2 17450, 30 x 30):
  * el__spline_largest's solves count on into the counter it is given (without a budget: work
@@ -384,6 +412,7 @@ int main(void)
     tcase_add_test(tc, a_sliding_batten_says_its_work);
     tcase_add_test(tc, no_way_from_a_rung_begins_past_the_budget);
     tcase_add_test(tc, units_outside_are_refused_before_any_search);
+    tcase_add_test(tc, a_length_beyond_the_units_is_refused);
     suite_add_tcase(s, tc);
     return test_run_suite(s);
 }

@@ -80,7 +80,10 @@ def test_what_the_units_cannot_represent_is_refused_with_its_cause():
              # the cause named, not the points' range
              (dict(points=line * 1e120, tension=1.0), r"tension 1 x \(mean chord"),
              (dict(points=line * 1e-120, start={"tangent": (1.0, 0.2), "curvature": 1e275}),
-              "start curvature")]
+              "start curvature"),
+             # a length over the mean chord past 1e150 (here inf in the solver's units: the
+             # free batten, 1e-320 of it, came back as the spline)
+             (dict(points=line * 1e-20, length=1e300), r"length 1e\+300 / \(mean chord")]
     for kw, cause in cases:
         with pytest.raises(el.DomainError, match=cause) as e:
             el.elastic_spline(**kw)
