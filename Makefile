@@ -207,11 +207,13 @@ check-asan: check-asan-lib
 # The python3 on PATH leaves out the tests marked c_numerics (tests/python/conftest.py: they
 # assert the C library's numbers through binding calls that the other tests make under both
 # Pythons; FreeCAD's Python runs them): its summary counts them as deselected.
-# $(call pytest-run,PYTHON,NAME[,OPTIONS]): one shell command; PYTEST_ARGS: more options (--durations=30)
+# Each log lists its 30 slowest tests (--durations: where make check's time goes, read without
+# another run).
+# $(call pytest-run,PYTHON,NAME[,OPTIONS]): one shell command; PYTEST_ARGS: more options
 pytest-run = { log=$(CURDIR)/$(BUILD)/pytest-$(2).log; \
 	echo "== pytest under $$(command -v $(1)) (log $(BUILD)/pytest-$(2).log)"; \
 	cd tests/python && LIBELASTICA_PATH=$(CURDIR)/$(BUILD)/libelastica.so PYTHONPATH=$(CURDIR)/python \
-	  $(1) -m pytest -q -p no:cacheprovider --strict-markers --basetemp=$(CURDIR)/$(BUILD)/pytest-$(2) $(3) $(PYTEST_ARGS) . \
+	  $(1) -m pytest -q -p no:cacheprovider --strict-markers --basetemp=$(CURDIR)/$(BUILD)/pytest-$(2) --durations=30 $(3) $(PYTEST_ARGS) . \
 	  > $$log 2>&1 || { cat $$log; echo "FAILED: pytest under $(1) (log $(BUILD)/pytest-$(2).log)"; exit 1; }; \
 	tail -n 1 $$log; }
 check-python: check-python-sys check-python-path
@@ -220,16 +222,29 @@ check-python-sys: lib
 check-python-path: lib
 	@if [ "$$(command -v $(PYTHON))" != "$(SYSPYTHON)" ]; then $(call pytest-run,$(PYTHON),path,-m "not c_numerics"); fi
 
+# FreeCAD's tests (one freecadcmd after another) and its GUI smoke (a HOME of its own:
+# freecad.mk) run side by side, the smoke in the background of this one job: it polls the
+# event loop (gui_smoke.wait) and uses about half a core (73-79 CPU-s with Xvfb, 046b1e9,
+# over 2 min 48 s of wall in the last clean check), so that as a job of its own it would
+# leave half a core idle for its whole run. Its output is printed after the tests'; the
+# stage fails when either fails.
 check-freecad: lib
 	@if [ -d tests/freecad ] && ls tests/freecad/test_*.py >/dev/null 2>&1; then \
-	  $(MAKE) --no-print-directory -j1 -f tests/freecad/freecad.mk BUILD=$(BUILD); fi
+	  mkdir -p $(BUILD)/freecad; \
+	  $(MAKE) --no-print-directory -f tests/freecad/freecad.mk BUILD=$(BUILD) fc-gui \
+	    > $(BUILD)/freecad/fc-gui.out 2>&1 & gui=$$!; \
+	  rc=0; $(MAKE) --no-print-directory -f tests/freecad/freecad.mk BUILD=$(BUILD) fc-tests fc-addon || rc=$$?; \
+	  grc=0; wait $$gui || grc=$$?; cat $(BUILD)/freecad/fc-gui.out; \
+	  [ $$rc -eq 0 ] && [ $$grc -eq 0 ]; fi
 
 # The stages are independent once the library is built: make check runs them CHECK_JOBS (the
 # cores) at a time, each stage's output printed whole when it ends (-Otarget). It is CPU-bound
 # (~29 CPU-min on 2 cores: as long as the cores are kept busy, the order changes little), so
-# the longest single processes start first, each pytest run (~6 CPU-min) and FreeCAD's tests
-# (one HOME: one after another, -j1 above), and the ~100 short C test runs fill the cores
-# after them, so that no long stage runs alone at the end. The fuzz slice needs only
+# the longest single processes start first: the pytest run under FreeCAD's Python (~6 CPU-min),
+# FreeCAD's tests (~3.5 min, one freecadcmd after another, its GUI smoke beside them), then the
+# other pytest run, and the ~100 short C test runs fill the cores after them, so that no long
+# stage runs alone at the end (FreeCAD's chain, once listed after both pytest runs, started
+# ~8 min in and ran 6 min, tests then smoke). The fuzz slice needs only
 # build/asan's library (check-asan-lib, made once: two makes building it at once would race),
 # not the ASan tests' end.
 CHECK_JOBS ?= $(shell nproc 2>/dev/null || echo 2)
@@ -237,7 +252,8 @@ check: deps
 	@$(MAKE) --no-print-directory -j$(CHECK_JOBS) -Otarget check-stages
 	@echo "make check: all tests passed"
 
-check-stages: lib check-python check-freecad check-asan check-fuzz-stage check-c check-tsan check-install
+check-stages: lib check-python-sys check-freecad check-python-path check-asan check-fuzz-stage check-c check-tsan \
+              check-install
 check-fuzz-stage: check-asan-lib lib
 	@$(MAKE) --no-print-directory check-fuzz
 

@@ -9,27 +9,41 @@
 # so the user's real ~/.local and ~/.config are never touched, and with TMPDIR in it: the
 # Start page leaves a FreeCADStartThumbnails folder in the temporary directory at each
 # GUI start (and the single-instance socket, `FreeCAD`, stays there too).
+# The GUI smoke (and the demo document it opens) has a HOME of its own, made the same way
+# ($(BUILD)/freecad/gui-home): FreeCAD writes its configuration into HOME when it quits, so
+# with one HOME each its tests and the smoke can run side by side (make -j: make check runs
+# them as two jobs, neither waiting for the other's ~3 min).
 BUILD     ?= build
 FCDIR     := $(BUILD)/freecad
 FCHOME    := $(CURDIR)/$(FCDIR)/home
-FCMOD     := $(FCHOME)/.local/share/FreeCAD/Mod
+GUIHOME   := $(CURDIR)/$(FCDIR)/gui-home
 FC_TESTS  := $(basename $(notdir $(wildcard tests/freecad/test_*.py)))
-FC_ENV     = HOME=$(FCHOME) LIBELASTICA_PATH=$(CURDIR)/$(BUILD)/libelastica.so \
+# $(call fc-env,HOME): the environment FreeCAD runs in
+fc-env     = HOME=$(1) LIBELASTICA_PATH=$(CURDIR)/$(BUILD)/libelastica.so \
              PYTHONPATH=$(CURDIR)/python:$(CURDIR)/tests/freecad \
-             QTWEBENGINE_DISABLE_SANDBOX=1 ELASTICA_TEST_OUT=$(CURDIR)/$(FCDIR) TMPDIR=$(FCHOME)/tmp
+             QTWEBENGINE_DISABLE_SANDBOX=1 ELASTICA_TEST_OUT=$(CURDIR)/$(FCDIR) TMPDIR=$(1)/tmp
+FC_ENV     = $(call fc-env,$(FCHOME))
+GUI_ENV    = $(call fc-env,$(GUIHOME))
 TIMEOUT   ?= 150
 # the GUI smoke drives every panel (364 checks; its waits poll, gui_smoke.wait): ~3 min at load 12 on 2 cores
 GUI_TIMEOUT ?= 450
 
-.PHONY: all fc-home fc-tests fc-gui fc-demo fc-gallery fc-addon
-all: fc-tests fc-addon fc-gui
+.PHONY: all fc-home fc-gui-home fc-tests fc-gui fc-demo fc-gallery fc-addon
+all: fc-tests fc-gui fc-addon
 
-# a fresh HOME without a Mod folder: `make freecad-install` must make it and link the workbench
+# $(call fresh-home,HOME): a fresh HOME without a Mod folder: `make freecad-install` must
+# make it and link the workbench
+define fresh-home
+	@rm -rf $(1) && mkdir -p $(1)/tmp
+	+@$(MAKE) --no-print-directory -f Makefile freecad-install FREECAD_MOD=$(1)/.local/share/FreeCAD/Mod \
+	  BUILD=$(BUILD) > /dev/null
+	@test "$$(readlink $(1)/.local/share/FreeCAD/Mod/elastica)" = "$(CURDIR)/freecad_wb" || \
+	  { echo "FAILED: make freecad-install did not link $(1)/.local/share/FreeCAD/Mod/elastica"; exit 1; }
+endef
 fc-home:
-	@rm -rf $(FCHOME) && mkdir -p $(FCHOME)/tmp
-	@$(MAKE) --no-print-directory -f Makefile freecad-install FREECAD_MOD=$(FCMOD) BUILD=$(BUILD) > /dev/null
-	@test "$$(readlink $(FCMOD)/elastica)" = "$(CURDIR)/freecad_wb" || \
-	  { echo "FAILED: make freecad-install did not link $(FCMOD)/elastica"; exit 1; }
+	$(call fresh-home,$(FCHOME))
+fc-gui-home:
+	$(call fresh-home,$(GUIHOME))
 
 fc-tests: fc-home
 	@set -e; for m in $(FC_TESTS); do \
@@ -54,15 +68,15 @@ fc-addon:
 	case "$$out" in "ADDON OK $(CURDIR)/python/libelastica/__init__.py") echo "$$out";; \
 	  *) echo "FAILED: addon install: $$out"; exit 1;; esac
 
-fc-demo: fc-home
-	@rc=0; env $(FC_ENV) ELASTICA_DEMO_OUT=$(CURDIR)/$(FCDIR)/demo timeout $(TIMEOUT) \
+fc-demo: fc-gui-home
+	@rc=0; env $(GUI_ENV) ELASTICA_DEMO_OUT=$(CURDIR)/$(FCDIR)/demo timeout $(TIMEOUT) \
 	  freecadcmd $(CURDIR)/examples/demo.py > $(FCDIR)/demo.log 2>&1 || rc=$$?; \
 	if [ $$rc -ne 0 ]; then tail -n 30 $(FCDIR)/demo.log; echo "FAILED: the demo document"; exit 1; fi
 
-fc-gui: fc-home fc-demo
+fc-gui: fc-gui-home fc-demo
 	@echo "== freecad (GUI, xvfb-run -a) tests/freecad/gui_smoke.py"
 	@rm -f $(FCDIR)/gui_smoke.result $(FCDIR)/gui_*.png
-	@rc=0; env $(FC_ENV) timeout $(GUI_TIMEOUT) xvfb-run -a -s "-screen 0 1280x1024x24" \
+	@rc=0; env $(GUI_ENV) timeout $(GUI_TIMEOUT) xvfb-run -a -s "-screen 0 1280x1024x24" \
 	  freecad $(CURDIR)/tests/freecad/gui_smoke.py > $(FCDIR)/gui_smoke.log 2>&1 || rc=$$?; \
 	if [ $$rc -ne 0 ] || [ "$$(head -n 1 $(FCDIR)/gui_smoke.result 2>/dev/null)" != "PASS" ]; then \
 	  tail -n 40 $(FCDIR)/gui_smoke.log; cat $(FCDIR)/gui_smoke.result 2>/dev/null; \
@@ -70,8 +84,8 @@ fc-gui: fc-home fc-demo
 	@tail -n +2 $(FCDIR)/gui_smoke.result
 
 # the README's screenshot of the workbench (make gallery): the demo document in FreeCAD
-fc-gallery: fc-home fc-demo
-	@rc=0; env $(FC_ENV) ELASTICA_GALLERY=$(CURDIR)/docs/gallery timeout $(TIMEOUT) \
+fc-gallery: fc-gui-home fc-demo
+	@rc=0; env $(GUI_ENV) ELASTICA_GALLERY=$(CURDIR)/docs/gallery timeout $(TIMEOUT) \
 	  xvfb-run -a -s "-screen 0 1280x1024x24" freecad $(CURDIR)/tests/freecad/gallery.py \
 	  > $(FCDIR)/gallery.log 2>&1 || rc=$$?; \
 	if [ $$rc -ne 0 ]; then tail -n 30 $(FCDIR)/gallery.log; echo "FAILED: the FreeCAD screenshot"; exit 1; fi
