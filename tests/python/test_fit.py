@@ -350,6 +350,7 @@ def test_clustered_exact_points_give_their_curve():
     assert r.status == 0 and r.rms < 1e-9 * scale, r.rms
 
 
+@pytest.mark.c_numerics
 def test_noisy_straight_runs_converge():
     """A designer's straight run: 40 noisy lines of 20-200 points, equal steps and random
     places (noise 0.5 % of the length). Every fit ends within the line's own rms and is
@@ -1321,6 +1322,7 @@ def _crossings(V):
     return n
 
 
+@pytest.mark.c_numerics
 def test_g1_join_to_nearly_collinear_lines_is_not_a_chain_of_loops():
     """31 points sketched along 82 mm, ~1 % noise, clustered at the start with one far point,
     joined G1 at both ends to two nearly collinear lines (QA). Main returned status 4 (not
