@@ -271,6 +271,7 @@ def test_clockwise_loops_have_negative_k_and_run_p0_to_p1():
     assert signs == {-1.0, 1.0}
 
 
+@pytest.mark.c_numerics
 @pytest.mark.parametrize("mode", ["tension", "length"])
 def test_completeness_against_brute_force(mode):
     problems = _problems(200, mode, seed=5 if mode == "tension" else 6)   # issue 5: >= 200 per mode
