@@ -222,31 +222,24 @@ check-python-sys: lib
 check-python-path: lib
 	@if [ "$$(command -v $(PYTHON))" != "$(SYSPYTHON)" ]; then $(call pytest-run,$(PYTHON),path,-m "not c_numerics"); fi
 
-# FreeCAD's tests (one freecadcmd after another) and its GUI smoke (a HOME of its own:
-# freecad.mk) run side by side, the smoke in the background of this one job: it polls the
-# event loop (gui_smoke.wait) and uses about half a core (73-79 CPU-s with Xvfb, 046b1e9,
-# over 2 min 48 s of wall in the last clean check), so that as a job of its own it would
-# leave half a core idle for its whole run. Its output is printed after the tests'; the
-# stage fails when either fails.
+# FreeCAD's tests (one freecadcmd after another), its GUI smoke (a HOME of its own:
+# freecad.mk) and the addon check are jobs of make's -j: the smoke runs beside the tests
+# where a job slot is free, never as a process beyond CHECK_JOBS (the tests and the smoke
+# have wall-clock limits: started as a third process beside them at load 15, both ran out).
 check-freecad: lib
 	@if [ -d tests/freecad ] && ls tests/freecad/test_*.py >/dev/null 2>&1; then \
-	  mkdir -p $(BUILD)/freecad; \
-	  $(MAKE) --no-print-directory -f tests/freecad/freecad.mk BUILD=$(BUILD) fc-gui \
-	    > $(BUILD)/freecad/fc-gui.out 2>&1 & gui=$$!; \
-	  rc=0; $(MAKE) --no-print-directory -f tests/freecad/freecad.mk BUILD=$(BUILD) fc-tests fc-addon || rc=$$?; \
-	  grc=0; wait $$gui || grc=$$?; cat $(BUILD)/freecad/fc-gui.out; \
-	  [ $$rc -eq 0 ] && [ $$grc -eq 0 ]; fi
+	  $(MAKE) --no-print-directory -f tests/freecad/freecad.mk BUILD=$(BUILD); fi
 
 # The stages are independent once the library is built: make check runs them CHECK_JOBS (the
 # cores) at a time, each stage's output printed whole when it ends (-Otarget). It is CPU-bound
 # (~29 CPU-min on 2 cores: as long as the cores are kept busy, the order changes little), so
 # the longest single processes start first: the pytest run under FreeCAD's Python (~6 CPU-min),
-# FreeCAD's tests (~3.5 min, one freecadcmd after another, its GUI smoke beside them), then the
-# other pytest run, and the ~100 short C test runs fill the cores after them, so that no long
-# stage runs alone at the end (FreeCAD's chain, once listed after both pytest runs, started
-# ~8 min in and ran 6 min, tests then smoke). The fuzz slice needs only
-# build/asan's library (check-asan-lib, made once: two makes building it at once would race),
-# not the ASan tests' end.
+# FreeCAD's tests (~3.5 min, one freecadcmd after another; its GUI smoke, ~3 min, beside them
+# when a slot is free), then the other pytest run, and the ~100 short C test runs fill the
+# cores after them, so that no long stage runs alone at the end (FreeCAD's chain, once listed
+# after both pytest runs, started ~8 min in and ran 6 min, tests then smoke). The fuzz slice
+# needs only build/asan's library (check-asan-lib, made once: two makes building it at once
+# would race), not the ASan tests' end.
 CHECK_JOBS ?= $(shell nproc 2>/dev/null || echo 2)
 check: deps
 	@$(MAKE) --no-print-directory -j$(CHECK_JOBS) -Otarget check-stages
