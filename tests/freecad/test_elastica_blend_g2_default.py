@@ -10,6 +10,7 @@ import Part
 
 import elastica_samples as S
 from freecad.elastica import blend as Bl
+from freecad.elastica import blend_g2 as B2
 from freecad.elastica import blend_start as BS
 
 
@@ -84,3 +85,36 @@ class BlendG2DefaultTest(S.DocTest):
         self.assertNotIn("shown instead", b.Status)
         self.assertEqual(b.BlendTension, 0.0)
         self.assertAlmostEqual(b.BlendLength, 154.4, delta=0.1)
+
+    def test_the_fairest_is_refined_not_a_grid_length(self):
+        """The shown blend is the least energy x length of its branch near the grid's best,
+        not the grid's best itself (review of F10: 253.22 mm, 25.48, where 245.5 mm has
+        25.24), so it moves with the edges: the line's end moved 2 mm, 1664 -> 1666, made
+        the grid's blend jump 197.5 -> 204.8 mm (its best switched to the next length)."""
+        line = Part.Edge(Part.LineSegment(App.Vector(1500, -800, 0), App.Vector(1620, -800, 0)))
+        arc = Part.Edge(Part.ArcOfCircle(Part.Circle(App.Vector(1830, -710, 0),
+                                                     App.Vector(0, 0, 1), 60),
+                                         math.radians(200), math.radians(330)))
+        r = Bl.blend_core(line, True, arc, False, None)
+        pts, ends = B2.g2_problem(r)
+        sp, _, note = B2.g2_blend(r, 0, "tension", 0.0, 1e-4, 5)
+        self.assertIn("shown instead", note)
+        fair = float(sp.energy) * float(sp.length)
+        for d in (-0.5, 0.5):           # a local least along the branch
+            near = B2.quiet_g2(pts, ends, length=float(sp.length) + d, initial=[r["curves"][0]])
+            self.assertEqual(Bl.inflections(near.pieces), 2)
+            self.assertGreaterEqual(float(near.energy) * float(near.length), fair * (1 - 1e-9))
+        # the feature: the line's end dragged 2 mm, the blend's length moves ~1.7 mm
+        sk = self.doc.addObject("Sketcher::SketchObject", "Dragged")
+        sk.addGeometry(Part.LineSegment(App.Vector(1500, -800, 0), App.Vector(1664, -800, 0)), False)
+        sk.addGeometry(arc.Curve.trim(arc.FirstParameter, arc.LastParameter), False)
+        self.doc.recompute()
+        b = Bl.make(self.doc, (sk, "Edge1"), (sk, "Edge2"), Continuity="G2")
+        self.doc.recompute()
+        self.assertIn("shown instead", b.Status)
+        before = b.BlendLength
+        sk.movePoint(0, 2, App.Vector(1666, -800, 0))
+        self.doc.recompute()
+        self.assertIn("shown instead", b.Status)
+        self.assertLess(b.BlendLength, before)          # shorter as the gap closes
+        self.assertGreater(b.BlendLength, before - 3.0)

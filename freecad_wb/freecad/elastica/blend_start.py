@@ -3,6 +3,7 @@ no free batten joins the ends (G1: starting_length, what the command and the pan
 by, free_or_length), or the free G2 batten is a snake (fairer_than_free, g2_blend's): by
 length at the fairest of LENGTH_MULTIPLES times the distance between the ends, and said."""
 from __future__ import annotations
+import math
 
 from .blend import NoBlend, bending_energy, blend_core, describe, inflections, plural
 from .blend_g2 import G2_REACH_MULTIPLES, G2_TENSION_DIGITS, g2_problem, quiet_g2
@@ -174,7 +175,8 @@ def fairer_along(pts, ends, sibling, free):
     """Where the free G2 batten ``free`` (tension 0, bent from the G1 solution ``sibling``)
     is far longer than that solution (ALONG_LONGER) and less fair: the fairest G2 blend of
     lengths between
-    the two (ALONG_STEPS of them, the sibling's included, each bent from ``sibling``): at
+    the two (ALONG_STEPS of them, the sibling's included, each bent from ``sibling``, the
+    best refined between its neighbours: _refined): at
     most as many inflections as ``free`` and as ``sibling`` plus one, fewest first, then the
     lowest bending energy x length (the energy of its shape whatever its size, as
     fairest_by_length). Returns (el.ElasticSpline, note for Status) where its energy x length
@@ -187,8 +189,8 @@ def fairer_along(pts, ends, sibling, free):
     against 0.0994 at 274 mm; of 13 line / arc / B-spline pairs, at most 1.2 % below the
     least of the branch's shorter members, and 6.6 % and 19 % above it on two): along the
     guided batten's family the guide ducks do work, so tension 0 is not its least energy.
-    The fairest by energy x length is 253 mm (25.5 against 39.1, 62 mm off the chord,
-    2 inflections as the free one). Where the free batten is about
+    The fairest by energy x length is 245.5 mm (25.2 against 39.1, 2 inflections as the
+    free one; the best of the grid refined, _refined). Where the free batten is about
     the G1 length (lines, an arc into a line: at most 1.2 x in the 13 pairs; the batten a few
     % longer and pushed hard instead, tension -0.12/mm^2 on a 48 mm blend, is no better
     seen) it stays the blend."""
@@ -201,18 +203,24 @@ def fairer_along(pts, ends, sibling, free):
     free_infl = inflections(free.pieces)
     cap = min(free_infl, len(e.elastica_inflections(sibling)) + 1)
     free_key = float(free.energy) * b
-    best = None
-    for k in range(ALONG_STEPS):
-        length = a + (b - a) * k / ALONG_STEPS
+    def probe(length):
+        """((inflections, energy x length), spline) at ``length``, or None (no solve)."""
         try:
             sp = quiet_g2(pts, ends, length=length, initial=[sibling])
         except (ValueError, ArithmeticError, RuntimeError):
-            continue
-        infl = inflections(sp.pieces)
-        key = (infl, float(sp.energy) * float(sp.length))
-        if infl <= cap and (best is None or key < best[0]):
-            best = (key, sp)
-    if best is None or best[0][1] >= ALONG_GAIN * free_key:
+            return None
+        return (inflections(sp.pieces), float(sp.energy) * float(sp.length)), sp
+
+    best, at = None, None
+    for k in range(ALONG_STEPS):
+        got = probe(a + (b - a) * k / ALONG_STEPS)
+        if got is not None and got[0][0] <= cap and (best is None or got[0] < best[0]):
+            best, at = got, k
+    if best is None:
+        return None
+    best = _refined(probe, best, a + (b - a) * max(at - 1, 0) / ALONG_STEPS,
+                    a + (b - a) * min(at + 1, ALONG_STEPS) / ALONG_STEPS)
+    if best[0][1] >= ALONG_GAIN * free_key:
         return None
     (infl, fair), sp = best
     dist = float(np().linalg.norm(pts[1] - pts[0]))
@@ -225,9 +233,48 @@ def fairer_along(pts, ends, sibling, free):
                 "solution the free batten may be its own)")
 
 
+# golden-section steps refining the best of the ALONG_STEPS lengths within its two grid
+# steps: 0.618^ALONG_REFINE of them (31 mm for F4's line and arc: to ~0.04 mm)
+ALONG_REFINE = 14
+
+
+def _refined(probe, best, lo, hi):
+    """The lowest energy x length of the G2 blends of lengths in [lo, hi] with as many
+    inflections as ``best`` (probe(length): ((inflections, energy x length), spline) or
+    None), by golden section from ``best`` (the best of the grid, at a grid length inside):
+    the grid alone made the blend jump ~7 mm as an edge moved 2 mm, its best switching to
+    the next length (review of F10). Hand-written: FreeCAD's Python has no scipy, and each
+    probe is a spline solve the library's minimisers cannot call."""
+    def key(length):
+        got = probe(length)
+        if got is None or got[0][0] != best[0][0]:
+            return math.inf, got
+        return got[0][1], got
+
+    r = 0.5 * (math.sqrt(5.0) - 1.0)
+    x1, x2 = hi - r * (hi - lo), lo + r * (hi - lo)
+    (f1, g1), (f2, g2) = key(x1), key(x2)
+    for _ in range(ALONG_REFINE):
+        for f, g in ((f1, g1), (f2, g2)):
+            if f < best[0][1]:
+                best = g
+        if f1 <= f2:
+            hi, x2, f2, g2 = x2, x1, f1, g1
+            x1 = hi - r * (hi - lo)
+            f1, g1 = key(x1)
+        else:
+            lo, x1, f1, g1 = x1, x2, f2, g2
+            x2 = lo + r * (hi - lo)
+            f2, g2 = key(x2)
+    for f, g in ((f1, g1), (f2, g2)):
+        if f < best[0][1]:
+            best = g
+    return best
+
+
 __all__ = ["LENGTH_MULTIPLES", "starting_length", "free_or_length", "fairest_by_length",
            "fair_where_no_free", "fairer_than_free", "kept_by_tension", "fairer_along",
-           "ALONG_LONGER", "ALONG_STEPS", "ALONG_GAIN"]
+           "ALONG_LONGER", "ALONG_STEPS", "ALONG_GAIN", "ALONG_REFINE"]
 
 
 def g2_start(e0, at_end0, e1, at_end1, plane, length):
