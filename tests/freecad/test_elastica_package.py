@@ -35,6 +35,18 @@ class PackageTest(unittest.TestCase):
                 with open(os.path.join(PKG, f)) as fh:
                     self.assertLessEqual(len(fh.readlines()), 800, f)
 
+    def test_no_installers_in_the_repository(self):
+        """No wheel or archive is committed (review of 15f1566: pyflakes-4.1.0-py2.py3-none-
+        any.whl, a linter's installer, landed at the repository's root): the Addon Manager
+        clones the repository into the user's Mod folder, and tools install from PyPI."""
+        import subprocess
+        try:
+            files = subprocess.run(["git", "-C", S.ROOT, "ls-files"], capture_output=True,
+                                   text=True, check=True).stdout.split()
+        except (OSError, subprocess.CalledProcessError):
+            files = os.listdir(S.ROOT)      # not a checkout: what is at its root
+        self.assertEqual([f for f in files if f.endswith((".whl", ".tar.gz", ".zip"))], [])
+
     def test_features_never_import_gui_code(self):
         """One module per feature, no features <-> task panels circle: the feature
         modules (and what they share) import neither GUI modules nor Qt; the GUI
