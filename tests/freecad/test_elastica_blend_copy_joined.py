@@ -194,3 +194,34 @@ class CopyJoinedTest(S.DocTest):
         Bl.copy_into_sketch(b, other)
         self.doc.recompute()
         self.assertEqual((len(other.Geometry), len(other.Constraints)), (1, 0))
+
+    def test_joints_the_sketch_refuses_are_taken_back_whole(self):
+        """join_ends' guard (no test before this review): the profile fully dimensioned and
+        the copy's start dimensioned by the designer, a joint there is redundant: both
+        joints are taken back, the geometry as it was, said in the report view."""
+        from freecad.elastica import geometry as G
+        sk = self.doc.addObject("Sketcher::SketchObject", "Dimensioned")
+        _line_arc(sk)
+        for c in (Sketcher.Constraint("DistanceX", -1, 1, 0, 1, 1500),
+                  Sketcher.Constraint("DistanceY", -1, 1, 0, 1, -800),
+                  Sketcher.Constraint("DistanceX", -1, 1, 0, 2, 1620),
+                  Sketcher.Constraint("DistanceY", -1, 1, 0, 2, -800),
+                  Sketcher.Constraint("Radius", 1, 60),
+                  Sketcher.Constraint("DistanceX", -1, 1, 1, 3, 1830),
+                  Sketcher.Constraint("DistanceY", -1, 1, 1, 3, -710),
+                  Sketcher.Constraint("Angle", 1, math.radians(130))):
+            sk.addConstraint(c)
+        self.doc.recompute()
+        b = Bl.make(self.doc, (sk, "Edge1"), (sk, "Edge2"), Continuity="G2")
+        self.doc.recompute()
+        gi = G.write_to_sketch(b, sk)[0]
+        p0 = sk.Geometry[gi].StartPoint
+        sk.addConstraint(Sketcher.Constraint("DistanceX", -1, 1, gi, 1, p0.x))
+        sk.addConstraint(Sketcher.Constraint("DistanceY", -1, 1, gi, 1, p0.y))
+        self.doc.recompute()
+        self.assertEqual(sk.solve(), 0)
+        n, before = len(sk.Constraints), _probe(sk)
+        said, added = S.console_output(lambda: G.join_ends(sk, [gi], Bl._joint_ends(b, sk)))
+        self.assertEqual((added, len(sk.Constraints), sk.solve()), ([], n, 0))
+        self.assertEqual(max((p - q).Length for p, q in zip(before, _probe(sk))), 0.0)
+        self.assertIn("the copy is not joined to the edges by Tangent constraints", said)
