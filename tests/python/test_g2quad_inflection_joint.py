@@ -130,3 +130,61 @@ def test_points_without_tangents_meet_g1_on_the_mean_tangent(n, monkeypatch):
         assert g.deviation <= plain.deviation * (1 + 1e-9)
         assert g.join_curvature_jump <= plain.join_curvature_jump * 1.01
         assert g.curvature_jump < 1e-9
+
+
+def _joint_angles(g):
+    out = []
+    for a, b in zip(g.bsplines, g.bsplines[1:]):
+        ta, tb = _end_tangent(a, -1), _end_tangent(b, 0)
+        out.append(abs(math.atan2(ta[0] * tb[1] - ta[1] * tb[0], ta @ tb)))
+    return out
+
+
+def _one_sided_jump(b):
+    """Largest relative curvature jump at b's interior knots from one-sided second
+    derivatives (scipy's, not the library's): G2 inside, end parabolas' joints included."""
+    from scipy.interpolate import BSpline as SciBSpline
+    sb = SciBSpline(np.asarray(b.flat_knots()), np.asarray(b.poles), 2)
+    d1, d2 = sb.derivative(1), sb.derivative(2)
+    worst = 0.0
+    for u in b.knots[1:-1]:
+        p = d1(u)
+        k = [(p[0] * q[1] - p[1] * q[0]) / np.linalg.norm(p) ** 3
+             for q in (d2(u - 1e-9), d2(u + 1e-9))]
+        worst = max(worst, abs(k[0] - k[1]) / max(abs(k[0]), abs(k[1])))
+    return worst
+
+
+@pytest.mark.parametrize("kind", ["spline", "ring"])
+def test_a_closed_outline_with_inflections_meets_g1_joint_by_joint(kind, monkeypatch):
+    """A closed peanut outline (12 ducks, a closed free ElasticSpline, 4 inflections; its
+    samples without tangents as a ring) at 96 edges: pieces of 7, 41, 7, 20-31 edges, two of
+    them between two joints (each carrying both joints' moves). Joint by joint: G1, or
+    exactly the plain build's angle (both ends or neither, never one); G2 inside every piece
+    by one-sided second derivatives (the end parabolas' joints too); the seam (point 0, on
+    a lobe) as the plain build closes it; the deviation no larger. Review revC: at 24 and
+    48 edges the waist's pieces have 3-4 edges and no joint is held (0.3 .. 3.5 deg)."""
+    th = np.linspace(0.0, 2.0 * np.pi, 13)[:-1]
+    r = 100.0 * (1.0 + 0.45 * np.cos(2.0 * th))
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        sp = el.elastic_spline(np.c_[1.6 * r * np.cos(th), r * np.sin(th)], tension=0.0,
+                               closed=True)
+    src = sp
+    if kind == "ring":
+        src = np.vstack([p.points(np.linspace(0.0, p.length, 40, endpoint=False))
+                         for p in sp.pieces])
+        src = np.vstack([src, src[:1]])
+    g = _build(src, 96, False, monkeypatch)
+    plain = _build(src, 96, True, monkeypatch)
+    edges = np.diff(g.polyline.piece_start)
+    assert len(edges) >= 4 and edges.min() >= G.JOINT_HOLD_EDGES
+    new, old = _joint_angles(g), _joint_angles(plain)
+    assert min(old) > 1e-3                               # 0.34 .. 0.45 deg plain
+    for a, b in zip(new, old):
+        assert a < 1e-12 or abs(a - b) <= 1e-9 * b, (new, old)
+    assert sum(a < 1e-12 for a in new) >= len(new) - 1   # (ring: one left for its deviation)
+    assert max(_one_sided_jump(b) for b in g.bsplines) < 1e-9
+    assert g.seam_angle == pytest.approx(plain.seam_angle, abs=1e-15)
+    assert g.seam_curvature_jump == pytest.approx(plain.seam_curvature_jump, abs=1e-12)
+    assert g.deviation <= plain.deviation * (1 + 1e-9)
