@@ -387,8 +387,8 @@ def g2_quadratic(curve_or_points, n: int, samples_per_vertex: int = 20, tangents
     curvature-continuous uniform quadratic B-spline per inflection-free piece that
     ends exactly on the source: at its end points and at its inflections
     (:func:`g2_bspline`; only the two end segments of a piece are not uniform).
-    ``tangents`` (N+1, 2) of point data sharpen the replacement curve and give the
-    end tangent error; ``end_curvatures`` (k_start, k_end) of point data, the source's own
+    ``tangents`` (N+1, 2) of point data (nonzero: ValueError naming a (0, 0) row) sharpen
+    the replacement curve and give the end tangent error; ``end_curvatures`` (k_start, k_end) of point data, the source's own
     signed curvature at the first and last point (None for either: estimated from that
     end's samples, _end_curvature), held there instead: closed samples (the last point the
     first) given one tangent and one curvature at both ends close G2 (a FreeCAD closed wire
@@ -453,6 +453,13 @@ def g2_quadratic(curve_or_points, n: int, samples_per_vertex: int = 20, tangents
         g.fit = fitted
         return g
     k_given = _end_curvatures(end_curvatures, is_curve)
+    if tangents is not None and not is_curve:
+        # a tangent of no direction: normalised where a piece ends it was NaN (the figures
+        # NaN, review revC), elsewhere C's f~ takes the arcs beside it straight
+        zero = np.flatnonzero(~np.any(as_points(tangents, "tangents") != 0.0, axis=1))
+        if len(zero):
+            raise ValueError(f"g2_quadratic: tangents[{zero[0]}] is (0, 0): every sample's "
+                             "tangent needs a direction (the curve's own there)")
     local = _local_source(curve_or_points, is_curve)
     if local is not None:   # far from (0, 0): built in a local frame, moved back (exactly)
         return _built_locally(lambda src: g2_quadratic(

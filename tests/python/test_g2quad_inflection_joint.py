@@ -188,3 +188,20 @@ def test_a_closed_outline_with_inflections_meets_g1_joint_by_joint(kind, monkeyp
     assert g.seam_angle == pytest.approx(plain.seam_angle, abs=1e-15)
     assert g.seam_curvature_jump == pytest.approx(plain.seam_curvature_jump, abs=1e-12)
     assert g.deviation <= plain.deviation * (1 + 1e-9)
+
+
+@pytest.mark.parametrize("row", ["inflection", "start", "inside"])
+def test_a_tangent_of_no_direction_is_refused(row, monkeypatch):
+    """Samples' tangents with a (0, 0) row: at the inflection (a joint's held tangent) or the
+    start it was normalised to NaN and inflection_tangent_error / source_end_tangent_error
+    came out NaN (numpy's divide warning only); inside, C's f~ took the arcs beside it
+    straight. Refused, naming the row (review revC)."""
+    n = 24
+    s = np.linspace(0, QA_S.length, 20 * n + 1)
+    th = QA_S.angle(s)
+    T = np.c_[np.cos(th), np.sin(th)]
+    i = {"inflection": int(np.argmin(np.abs(s - el.affine.elastica_inflections(QA_S)[0]))),
+         "start": 0, "inside": 100}[row]
+    T[i] = 0.0
+    with pytest.raises(ValueError, match=rf"tangents\[{i}\] is \(0, 0\)"):
+        _build(QA_S.points(s), n, False, monkeypatch, tangents=T)
