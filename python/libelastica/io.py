@@ -79,7 +79,8 @@ def _split_fields(lines, delim: Optional[str], name: str) -> list:
         raise InputError(f"{name}: line {reader.line_num}: {exc}") from None
 
 
-def _parse_text(text: str, name: str, thousands: Optional[str] = None) -> tuple:
+def _parse_text(text: str, name: str, thousands: Optional[str] = None,
+                line_numbers: Optional[list] = None) -> tuple:
     """Rows of numbers separated by semicolons, tabs or spaces (with decimal commas or
     points), or commas (decimal commas quoted, as spreadsheets write them: "1,5","0,25").
     Blank lines and lines starting with '#' are skipped, and a '#' comment after a row's
@@ -92,7 +93,8 @@ def _parse_text(text: str, name: str, thousands: Optional[str] = None) -> tuple:
     brackets allowed); a header that names them picks them by name in any case ("id,x,y",
     "y,x", "name,x,y,z"), the other columns need not be numbers. Thousands grouped by '.'
     (:func:`_thousands`) are read as such in ';' and tab separated files that show it.
-    Returns the points and the unit the header names them in (None: _columns.header_unit)."""
+    Returns the points and the unit the header names them in (None: _columns.header_unit);
+    ``line_numbers``: a list each point's line in the text (from 1) is appended to, or None."""
     rows = []       # (line number, fields)
     header = None
     lines = [_uncommented(ln) for ln in text.splitlines()]     # (a line number per line)
@@ -181,6 +183,8 @@ def _parse_text(text: str, name: str, thousands: Optional[str] = None) -> tuple:
         _refuse_row_numbers(rows, width, delim, name,       # (a title line is no header)
                             header if header is not None and len(header) == width else None)
     out = _convert(rows, cols, named is not None, name)
+    if line_numbers is not None:
+        line_numbers.extend(ln for ln, _ in rows)
     if named is None and width > 3:
         raise InputError(f"{name}: {width} columns: name the coordinates x, y (and z) "
                          f"in a header line to read them from more columns, or give 2 or 3{hint}")
@@ -561,6 +565,14 @@ def read_points_unit(path: PathLike, min_points: int = 3, data: Optional[bytes] 
     ('mm' for ``x [mm],y [mm]``; DXF_UNITS' spelling where it is one of those: 'um' for
     'µm'), None where it names none (and for .npy). Columns naming two units
     (``x [mm],y [m]``) raise :class:`InputError` naming both."""
+    return _read_points_unit(path, min_points, data, thousands)
+
+
+def _read_points_unit(path: PathLike, min_points: int = 3, data: Optional[bytes] = None,
+                      thousands: Optional[str] = None, lines: Optional[list] = None) -> tuple:
+    """:func:`read_points_unit`; ``lines``: a list each point's line in the file (from 1:
+    where an editor shows it; for .npy its row, from 1) is appended to, or None (the FreeCAD
+    Fit names a file's point by its line)."""
     name = "standard input" if str(path) == "-" else str(path)
     data = read_input(path) if data is None else data
     if data.startswith(_NPY_MAGIC) or (str(path) != "-" and Path(path).suffix.lower() == ".npy"):
@@ -571,8 +583,10 @@ def read_points_unit(path: PathLike, min_points: int = 3, data: Optional[bytes] 
         if not np.issubdtype(arr.dtype, np.number):
             raise InputError(f"{name}: .npy array is not numeric (dtype {arr.dtype})")
         arr, unit = np.asarray(arr, dtype=np.float64), None
+        if lines is not None and arr.ndim == 2:
+            lines.extend(range(1, arr.shape[0] + 1))
     else:
-        arr, unit = _parse_text(_decode(data, name), name, thousands)
+        arr, unit = _parse_text(_decode(data, name), name, thousands, lines)
     if arr.ndim != 2 or arr.shape[1] not in (2, 3):
         raise InputError(f"{name}: need 2 or 3 columns (x,y or x,y,z), got shape {arr.shape}")
     if not np.all(np.isfinite(arr)):

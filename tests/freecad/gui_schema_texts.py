@@ -123,7 +123,8 @@ def far_place_in_us_customary(doc):
         G.screenshot("gui_fit_outliers_us.png")
         G.check(panel.warning[0].isVisible() and "outliers?" in said
                 and re.search(r"lie [0-9.]+ to [0-9.]+ thou from the curve", said)
-                and re.search(r'as given[^()]*, in the sketch at \(-?[0-9.]+, -?[0-9.]+\) "\)', said),
+                and re.search(r"FineScan's 11-Point, 26-Point; the farthest, 26-Point, in the "
+                              r'sketch at \(-?[0-9.]+, -?[0-9.]+\) "\)', said),
                 f"US customary: the far points in thou, their place in inches named: {said!r}")
         panel.reject()
         G.pump()

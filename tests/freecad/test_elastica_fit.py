@@ -303,7 +303,8 @@ class FitResultTest(S.DocTest):
         glitched[[10, 25]] += [[12.0, -9.0], [-20.0, 15.0]]
         for name, pts, far in (("Clean", noisy, False), ("Glitched", glitched, True)):
             for model in ("smooth", "discrete"):
-                f = Fi.make(self.doc, [(S.points_sketch(self.doc, pts, name), [])], Model=model)
+                sk = S.points_sketch(self.doc, pts, name)
+                f = Fi.make(self.doc, [(sk, [])], Model=model)
                 self.doc.recompute()
                 self.assertIn("converged", f.Status)
                 said = [w for w in f.Warnings if "outliers?" in w]
@@ -312,10 +313,12 @@ class FitResultTest(S.DocTest):
                     continue
                 self.assertEqual(len(said), 1, (model, list(f.Warnings)))
                 self.assertIn("2 of 40 points lie", said[0])
-                # named as the designer finds them (QA qagui F6): numbers as given (from 1)
-                # and the farthest's place in the sketch's coordinates, not global ones
+                # named as the designer finds them (QA qagui F6): as the Sketcher's Elements
+                # panel lists them, and the farthest's place in the sketch's coordinates, not
+                # global ones
                 top = glitched[25]
-                self.assertIn(f"(points 11, 26 as given; the farthest, 26, in the sketch at "
+                self.assertIn(f"({sk.Label}'s 11-Point, 26-Point; the farthest, 26-Point, in the "
+                              f"sketch at "
                               f"({U.number_text(top[0])}, {U.number_text(top[1])}) mm)", said[0])
                 # under Imperial decimal (a panel opened after the change: proxy.said) the
                 # figures and the place in inches (the place stayed in mm)
@@ -327,7 +330,7 @@ class FitResultTest(S.DocTest):
                 finally:
                     App.Units.setSchema(schema)
                 place = ", ".join(U.number_text(v / 25.4) for v in top)   # exact, in inches
-                self.assertIn(f"the farthest, 26, in the sketch at ({place}) in)", inch)
+                self.assertIn(f"the farthest, 26-Point, in the sketch at ({place}) in)", inch)
                 self.assertNotIn("mm", inch)
 
     def test_a_fit_that_swings_between_two_points_is_named(self):

@@ -2,7 +2,8 @@
 (QA qagui F6, F7). F6: 40 noisy points of an S on a datum plane inclined 35 deg in a Body
 placed off the origin, point 24 moved 4 mm across the curve: the outlier warning gave the
 global '(1835, 8.736, -278) mm', which appears nowhere in the sketch, and no number; now
-'point 24 as given, in the sketch at (1556, -624.2) mm' (the Sketcher's Vertex24). F7: 40
+'point 24 as given, in the sketch at (1556, -624.2) mm', now "Scan's 24-Point" as the
+Sketcher's Elements panel lists it (test_elastica_fit_sketcher_names). F7: 40
 points of a sine-like S (no elastica's shape), point 18 moved 9 mm: the misfit warning said
 'a corner, or curves of more than one piece' of a curve with no corner and did not name the
 point; now it says no corner stands out and names point 18, not the cause (rms 2.51 mm
@@ -58,7 +59,7 @@ class FitPointNamesTest(S.DocTest):
             self.doc.recompute()
             said = [w for w in say(list(f.Warnings)) if "outliers?" in w]
             self.assertEqual(len(said), 1, (model, list(f.Warnings)))
-            self.assertIn(f"(point 24 as given, in the sketch at ({U.number_text(xy[23][0])}, "
+            self.assertIn(f"(Scan's 24-Point, in the sketch at ({U.number_text(xy[23][0])}, "
                           f"{U.number_text(xy[23][1])}) mm)", said[0])
             self.assertNotIn(U.number_text(g.x), said[0])     # no global coordinates
 
@@ -77,7 +78,7 @@ class FitPointNamesTest(S.DocTest):
             self.assertEqual(len(said), 1, (model, list(f.Warnings)))
             self.assertNotIn("a corner", said[0])
             self.assertIn("no corner stands out, and the farthest point is not the cause "
-                          f"(point 18 as given, in the sketch at ({U.number_text(xy[17][0])}, "
+                          f"(Scan40's 18-Point, in the sketch at ({U.number_text(xy[17][0])}, "
                           f"{U.number_text(xy[17][1])}) mm, 7.4", said[0])   # 7.44 / 7.48 mm
             self.assertIn(" mm from the curve; without it rms 2.51 mm)", said[0])
             self.assertIn("elastic spline", said[0])

@@ -2,8 +2,9 @@
 F1): the Fit took the sketch's points in curve order with the stray point FIRST (PointNumbers
 [11, 1, 2, ...]), drew a 608 mm hook from it along a 330 mm curve, Status converged and no
 warning. Now the drawn order is kept (curve_order: the given order but for one far point)
-and Warnings name the point by its number in the sketch (11, its Vertex11), both models;
-the sketch without the stray point (and its 6 mm wobble) draws no such warning."""
+and Warnings name the point as the Sketcher's Elements panel lists it ('Straysmooth's
+11-Point'), both models; the sketch without the stray point (and its 6 mm wobble) draws no
+such warning."""
 import os
 import sys
 import unittest
@@ -38,7 +39,7 @@ class FitStrayTest(S.DocTest):
             self.assertEqual(list(f.PointNumbers), list(range(1, 19)), model)
             said = [w for w in say(list(f.Warnings)) if "dragged off?" in w]
             self.assertEqual(len(said), 1, (model, list(f.Warnings)))
-            self.assertIn("(point 11 as given, in the sketch at (", said[0])
+            self.assertIn(f"(Stray{model}'s 11-Point, in the sketch at (", said[0])
             self.assertIn("1 of 18 points lies", said[0])
 
     def test_the_sketch_without_it_draws_no_such_warning(self):

@@ -182,7 +182,8 @@ class MeasuredTextsTest(S.DocTest):
             said_now = [w for w in said(f, "Warnings") if "outliers?" in w]
             self.assertEqual(len(said_now), 1, list(f.Warnings))
             place = ", ".join(U.number_text(v / factor) for v in top)
-            self.assertIn(f"the farthest, 26, in the sketch at ({place}) {unit}): ", said_now[0])
+            self.assertIn(f"the farthest, 26-Point, in the sketch at ({place}) {unit}): ",
+                          said_now[0])
 
 
 if __name__ == "__main__":

@@ -268,13 +268,13 @@ def fit_sources(sources, csv_file="", open_panel=True, wrong=message, **options)
     checked = []
 
     def check():
-        notes = []
+        notes, names = [], []
         # the file read as the feature will read it (a Thousands option: its property)
         thousands = src_mod.THOUSANDS[opts.get("Thousands", "auto")]
         checked.append(fit_core.check_fit(
             src_mod.gather_points(sources, csv_file, notes=notes, thousands=thousands,
-                                  element=element_as_followed), notes,
-            **fit.core_options(opts)))
+                                  element=element_as_followed, names=names), notes,
+            names=names, **fit.core_options(opts)))
 
     def prepare(obj):
         """The check's fit is the new feature's first recompute's (fit_core.fit_gathered

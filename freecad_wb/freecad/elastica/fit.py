@@ -169,10 +169,10 @@ class FitProxy(FeatureProxy):
         # renames Source: read it after; a CSV file is read instead of Source, not its geometry
         element = None if obj.CsvFile else followed_reader(obj, "Source")
         stamp = csv_stamp(obj.CsvFile) if obj.CsvFile else ""   # before it is read
-        notes = []
+        notes, names = [], []     # (names: each point's in the warnings, the Sketcher's)
         gathered = gather_points(obj.Source, obj.CsvFile, obj.SamplesPerEdge, link="Source",
                                  element=element, notes=notes,
-                                 thousands=THOUSANDS[obj.Thousands])
+                                 thousands=THOUSANDS[obj.Thousands], names=names)
         edges = {}
         for key, prop in (("start", "StartTangent"), ("end", "EndTangent")):
             edge = followed_edge(obj, prop)
@@ -181,7 +181,7 @@ class FitProxy(FeatureProxy):
                 edges[f"{key}_at"] = edge_end_choice(obj, f"{prop}At")
         # a command's check of this input (commands.fit_sources): its fit, once
         checked, self.checked = getattr(self, "checked", None), None
-        r = fit_gathered(gathered, notes, checked, **core_options(obj), **edges)
+        r = fit_gathered(gathered, notes, checked, names=names, **core_options(obj), **edges)
         r["csv_stamp"] = stamp
         return r
 

@@ -316,10 +316,37 @@ def _coarse_keyline(xy, smooth, rms):
             "resampled polygon cuts their bends; choose Model Smooth elastica for so few points"]
 
 
-def _point_named(i, numbers, data, plane, sketch):
+def _number_named(number, names):
+    """How a warning names the point given as ``number`` (from 1): its name in ``names``
+    (sources.gather_points': a sketch's '<label>'s 26-Point' as the Sketcher's Elements panel
+    lists it, a file's 'line 27 of points.csv', a picked 'Wire's Vertex3'), else (none: points
+    sampled along edges) 'point 26 as given'."""
+    if names and 0 < number <= len(names):
+        return names[number - 1]
+    return f"point {number} as given"
+
+
+def _listed(said):
+    """(the names ``said`` listed, a function shortening one of them as listed): a label they
+    share said once ("Scan's 11-Point, 26-Point"), a file's lines as one ("lines 11, 26 of
+    points.csv"); else each in full."""
+    heads = {w.split("'s ", 1)[0] for w in said if "'s " in w}
+    if len(heads) == 1 and all("'s " in w for w in said):
+        head = heads.pop() + "'s "
+        return head + ", ".join(w[len(head):] for w in said), lambda w: w[len(head):]
+    tails = {w.split(" of ", 1)[1] for w in said if w.startswith("line ") and " of " in w}
+    if len(tails) == 1 and all(w.startswith("line ") and " of " in w for w in said):
+        tail = " of " + tails.pop()
+        return ("lines " + ", ".join(w[5:-len(tail)] for w in said) + tail,
+                lambda w: w[:-len(tail)])
+    return ", ".join(said), lambda w: w
+
+
+def _point_named(i, numbers, data, plane, sketch, names=None):
     """How a warning names fitted point i, the way the designer finds it (QA qagui F6: an
     outlier placed at global '(1835, 8.736, -278) mm', no number, was vertex 24 at (1556,
-    -624.2) in the Sketcher): its number as given (from 1: PointNumbers') and its place in
+    -624.2) in the Sketcher): its name (_number_named: the Sketcher's element, the file's
+    line, the vertex picked; ``names`` each given point's) and its place in
     the sketch's own coordinates (``sketch``: its global placement, inverted; None, or a
     point not in its plane: global coordinates). data: (n, 3) in the frame ``plane``."""
     at = plane.multVec(App.Vector(*map(float, data[i])))
@@ -330,28 +357,34 @@ def _point_named(i, numbers, data, plane, sketch):
             at, where = App.Vector(local.x, local.y, 0.0), "in the sketch "
     xyz = (at.x, at.y) if where else (at.x, at.y, at.z)
     # the unit named after the place: after '... within 24.7 \u00b5m' its mm read as \u00b5m
-    return (f"point {int(numbers[i])} as given, {where}at "
+    return (f"{_number_named(int(numbers[i]), names)}, {where}at "
             f"({', '.join(coordinate_mark(v) for v in xyz)}) {length_unit_mark(written=True)}")
 
 
-def _far_points(data, dist, plane, free=None, numbers=None, sketch=None):
+def _far_points(data, dist, plane, free=None, numbers=None, sketch=None, names=None):
     """The warning for points far from the fitted curve (el.far_points: glitches of a scan,
-    points of other geometry), naming them by number as given and the farthest's place
-    (_point_named), else none. data: (n, 3) in the frame ``plane``; free: their distances
-    to the fit with free ends (points held off only by the end conditions are no outliers
-    to remove); numbers: each one's number as given (default 1 .. n); sketch: the sketch's
-    placement (its coordinates named), or None."""
+    points of other geometry), naming them (_number_named: by ``names``, each given point's,
+    else by number as given) and the farthest's place (_point_named), else none. data: (n, 3)
+    in the frame ``plane``; free: their distances to the fit with free ends (points held off
+    only by the end conditions are no outliers to remove); numbers: each one's number as given
+    (default 1 .. n); sketch: the sketch's placement (its coordinates named), or None."""
     n = np()
     far = el().far_points(dist, data, free_distances=free)
     if not len(far):
         return []
     numbers = n.arange(1, len(data) + 1) if numbers is None else numbers
     farthest = far[n.argmax(n.abs(n.asarray(dist if free is None else free, dtype=float))[far])]
-    named = _point_named(farthest, numbers, data, plane, sketch)
+    named = _point_named(farthest, numbers, data, plane, sketch, names)
     if len(far) > 1:
         listed = sorted(int(numbers[i]) for i in far)
-        named = (f"points {', '.join(map(str, listed[:10]))}{', ...' if len(listed) > 10 else ''}"
-                 f" as given; the farthest, {named.split(' ', 1)[1].replace(' as given', '', 1)}")
+        more = ", ..." if len(listed) > 10 else ""
+        if names:
+            said, short = _listed([_number_named(k, names) for k in listed[:10]])
+            whole = _number_named(int(numbers[farthest]), names)
+            named = f"{said}{more}; the farthest, {short(whole)}{named[len(whole):]}"
+        else:
+            named = (f"points {', '.join(map(str, listed[:10]))}{more} as given; the farthest, "
+                     f"{named.split(' ', 1)[1].replace(' as given', '', 1)}")
     said = el().far_points_summary(dist, far, free_distances=free, length=figure_mark)
     return [f"{said} ({named}): "
             "outliers? Each pulls the fit towards itself: remove them to fit the rest"]
@@ -364,27 +397,27 @@ def _as_given(numbers):
     return list(numbers) in (k, k[::-1])
 
 
-def _stray(result, numbers, plane, data, sketch):
+def _stray(result, numbers, plane, data, sketch, names=None):
     """The warning for one stray point among a hand sketch's few (el.stray_point: far from
     the curve through the others, which it pulls; QA25gui F1: one of 18 sketched points
     mis-dragged 150 mm off, fitted with no word), naming it by its number as given and its
     place (_point_named), else none. result: the library's fit of the points as fitted (in
     the plane), numbers: each fitted point's number as given, data: the points (n, 3) in
-    the frame ``plane``, sketch: the sketch's placement or None."""
+    the frame ``plane``, sketch: the sketch's placement or None, names: as _point_named's."""
     stray = binding_module("stray").stray_point(result)
     if stray is None:
         return []
     i = stray[0]
     return [binding_module("misfit").stray_summary(
         len(result.points), stray, int(numbers[i]), length=figure_mark,
-        named=_point_named(i, numbers, data, plane, sketch))]
+        named=_point_named(i, numbers, data, plane, sketch, names))]
 
 
-def _misfit(xy, dist, plane, split, numbers, data, sketch):
+def _misfit(xy, dist, plane, split, numbers, data, sketch, names=None):
     """The warning for points far farther from the fit than their own noise (el.misfit: they
     are not one elastica, or keyline), naming the likely corner or the farthest points
     (_point_named), else none. xy (n, 2) in the frame ``plane``, dist: their distances to the
-    curve in it (None: not judged); numbers, data (n, 3), sketch: as _point_named's."""
+    curve in it (None: not judged); numbers, data (n, 3), sketch, names: as _point_named's."""
     if dist is None:
         return []
     # (a keyline's: no stray points tried, the others' refit would be one elastica's)
@@ -400,14 +433,15 @@ def _misfit(xy, dist, plane, split, numbers, data, sketch):
     at = [plane.multVec(App.Vector(float(x), float(y), 0.0)) for x, y in xy]
     said = el().misfit_summary(m, [(v.x, v.y, v.z) for v in at], numbered=False, length=exact_mark,
                                what="one keyline" if split else "one elastica",
-                               named=lambda i: _point_named(i, numbers, data, plane, sketch))
+                               named=lambda i: _point_named(i, numbers, data, plane, sketch, names))
     return [said]
 
 
 def fit_core(points, plane=None, ordered=True, closed=False, model="discrete", split=False,
              distance="orthogonal", pin_start=False, pin_end=False, start_edge=None,
              end_edge=None, start_curvature=None, end_curvature=None, start_join="tangent",
-             end_join="tangent", step=0.0, tol=1e-3, degree=3, start_at=None, end_at=None):
+             end_join="tangent", step=0.0, tol=1e-3, degree=3, start_at=None, end_at=None,
+             names=None):
     """Fit elastica(e) to 3D points: in their order (``ordered``), in curve_order's (False)
     or a file's, kept when a curve's (None: file_order). ``distance``: what the smooth one-piece fit
     minimises ("orthogonal": point to curve; "paired": point i at arc length
@@ -415,7 +449,9 @@ def fit_core(points, plane=None, ordered=True, closed=False, model="discrete", s
     tangents the curve's ends follow (``start_at`` / ``end_at``: at which end, as
     fit_ends.tangent_angle); ``start_curvature`` / ``end_curvature``: 1/mm
     or None (free); ``start_join`` / ``end_join``: how that end meets its edge
-    (end_constraints). Returns a dict: 'curves' (plane coordinates; a keyline's two
+    (end_constraints); ``names``: each point's name as the designer finds it (gather_points'
+    names: the Sketcher's element, a file's line; None or empty: 'point 12 as given'), for
+    the warnings. Returns a dict: 'curves' (plane coordinates; a keyline's two
     halves, each from the joint), 'results', 'bspline', 'placement', 'data' (the
     user's points, (n, 3) in the frame of the plane: never a resampled polygon, in the order
     fitted), 'numbers' (each one's number in the order given, from 1), 'feet'
@@ -538,7 +574,7 @@ def fit_core(points, plane=None, ordered=True, closed=False, model="discrete", s
         # adds its cost to those distances (the step's cost is said apart)
         judged = None if split or resampled else binding_module("fit").judged_fit(
             results[0], constraints, _distance(model, distance))
-        named = (numbers, user, sketch)
+        named = (numbers, user, sketch, names)
         misfit = _misfit(user[:, :2], dist, plane, True, *named) if split else \
             (_misfit(user[:, :2], dist, plane, False, *named) if not constraints else []) \
             if resampled else \
@@ -554,9 +590,9 @@ def fit_core(points, plane=None, ordered=True, closed=False, model="discrete", s
             _off_plane(user[:, 2], plane_rms, size) + \
             (_far_points(data[~beyond], dist[~beyond], plane,
                          None if resampled or free_dist is None else free_dist[~beyond],
-                         numbers[~beyond], sketch)
+                         numbers[~beyond], sketch, names)
              or ([] if split or resampled or constraints or not _as_given(numbers)
-                 else _stray(results[0], numbers, plane, user, sketch))) + \
+                 else _stray(results[0], numbers, plane, user, sketch, names))) + \
             ([] if split else _wanders(results[0], plane)) + misfit
     except InputProblem:
         raise

@@ -11,6 +11,7 @@ obj.Shape (a fit of a sketch edge in a Body at z = 100 tilted 30 deg lay 89 mm f
 edge drawn, its plane being the sketch's global placement)."""
 from __future__ import annotations
 
+import os
 import re
 
 import FreeCAD as App
@@ -80,7 +81,7 @@ _CLI_THOUSANDS = re.compile(r"\(command line: --thousands[^()]*(\([^()]*\)[^()]*
 
 
 def gather_points(sources, csv_file="", samples_per_edge=60, link=None, element=None,
-                  notes=None, thousands=None):
+                  notes=None, thousands=None, names=None):
     """Points of a fit's input, in 3D, with what is known about them; ``link``: the
     feature's property the sources come from (None: a selection; see nothing_read);
     ``element``: the function (obj, name) that reads a picked sub-element (global_element;
@@ -88,28 +89,31 @@ def gather_points(sources, csv_file="", samples_per_edge=60, link=None, element=
     the user's notes on what was left out are appended to (a whole sketch's edges beside
     its points); ``thousands``: how a CSV file groups thousands, read_points' (None: the
     file decides, '.', ',', '' none; a file that does not show it is refused naming ``link``'s
-    feature's Thousands property, THOUSANDS).
+    feature's Thousands property, THOUSANDS); ``names``: a list each point's name is appended
+    to, as the designer finds it (point_names; none for points sampled along edges).
 
     Returns (points: list[App.Vector], plane: App.Placement or None (a sketch's),
     ordered: True (in curve order), False (none: curve_order's) or None (a file's order,
     which may be no curve's: file_order), closed: bool)."""
     el()
     if csv_file:
-        read_points = binding_module("io").read_points
+        lines = []
         try:
-            arr = read_points(csv_file, min_points=1, thousands=thousands)
+            arr = binding_module("io")._read_points_unit(csv_file, 1, None, thousands, lines)[0]
         except ValueError as exc:
             # the library's way out names its own options (--thousands, read_points'
             # thousands=): here it is the fit's property
             raise InputProblem(_CLI_THOUSANDS.sub(THOUSANDS_HINT, str(exc))) from None
         pts = [App.Vector(*(list(map(float, r)) + [0.0] * (3 - len(r)))) for r in arr]
         closed = ends_meet(pts)
+        _named(names, [f"line {k} of {os.path.basename(csv_file)}" for k in lines])
         return pts, None, None, closed
     if not sources:
         raise nothing_read("sketch edges or vertices, a Points object, a wire, or give a CSV "
                            "file", link)
     element = element or global_element
     edges, vertices, points = [], [], []
+    said = []               # each of vertices' or points' name (point_names)
     plane = None
     sketches = set()
     for obj, subs in sources:
@@ -127,11 +131,13 @@ def gather_points(sources, csv_file="", samples_per_edge=60, link=None, element=
                 # and its edges can (QA: its points and a lead-in line to join refused, 'select
                 # its points in the 3D view')
                 vertices.extend(pts)
+                said.extend(point_names(obj))
                 if n_edges and notes is not None:
                     notes.append(_edges_left_out(obj.Label, len(pts), n_edges))
                 continue
         if obj.isDerivedFrom("Points::Feature"):
             points.extend(global_points(obj))
+            said.extend(f"{obj.Label}'s point {k + 1}" for k in range(len(obj.Points.Points)))
             continue
         shape = global_shape(obj)
         if shape.isNull():
@@ -141,6 +147,7 @@ def gather_points(sources, csv_file="", samples_per_edge=60, link=None, element=
                 edges.extend(shape.Edges)
             else:
                 vertices.extend(v.Point for v in shape.Vertexes)
+                said.extend(f"{obj.Label}'s Vertex{k + 1}" for k in range(len(shape.Vertexes)))
             continue
         for s in subs:
             e = element(obj, s)
@@ -148,6 +155,7 @@ def gather_points(sources, csv_file="", samples_per_edge=60, link=None, element=
                 edges.append(e)
             elif s.startswith("Vertex"):
                 vertices.append(e.Point)
+                said.append(_vertex_named(obj, s))
             else:
                 raise InputProblem(f"{obj.Label}.{s}: select edges or vertices")
     if len(sketches) > 1:
@@ -158,7 +166,63 @@ def gather_points(sources, csv_file="", samples_per_edge=60, link=None, element=
         pts, closed = sample_edges(edges, samples_per_edge)
         _few_line_points(sources, edges, pts, closed)
         return pts, plane, True, closed
-    return dedup(vertices or points), plane, False, False
+    pts = vertices or points
+    kept = _kept(pts)
+    _named(names, [said[k] for k in kept] if len(said) == len(pts) else [])
+    return [pts[k] for k in kept], plane, False, False
+
+
+def _kept(pts, tol=1e-9):
+    """The indices of the points geometry.dedup keeps (consecutive repeats merged into the
+    first): the names of the points kept."""
+    out = []
+    for k, v in enumerate(pts):
+        if not out or (v - pts[out[-1]]).Length > tol:
+            out.append(k)
+    return out
+
+
+def _named(names, said):
+    """Append the points' names ``said`` to the list ``names`` (None: not asked for)."""
+    if names is not None:
+        names.extend(said)
+
+
+# what the Sketcher's Elements panel calls each kind of geometry (FreeCAD 0.20's
+# TaskSketcherElements: '3-Point', '1-Line', '2-Arc', checked on 0.20.2 under xvfb)
+_ELEMENT_KINDS = {"Part::GeomPoint": "Point", "Part::GeomLineSegment": "Line",
+                  "Part::GeomArcOfCircle": "Arc", "Part::GeomCircle": "Circle",
+                  "Part::GeomEllipse": "Ellipse", "Part::GeomArcOfEllipse": "Elliptical Arc",
+                  "Part::GeomArcOfHyperbola": "Hyperbolic Arc",
+                  "Part::GeomArcOfParabola": "Parabolic Arc",
+                  "Part::GeomBSplineCurve": "BSpline"}
+
+
+def element_name(sketch, i):
+    """Geometry i of ``sketch`` as the Sketcher's Elements panel lists it: its index from 1
+    and its kind ('12-Point', '1-Line'), whatever else the sketch holds (lines, arcs,
+    construction geometry count too)."""
+    return f"{i + 1}-{_ELEMENT_KINDS.get(sketch.Geometry[i].TypeId, 'Other')}"
+
+
+def point_names(sketch):
+    """The names of a sketch's point geometries (sketch_points' order) as the designer finds
+    them in the Sketcher: '<label>'s 12-Point', the Elements panel's (element_name)."""
+    return [f"{sketch.Label}'s {element_name(sketch, i)}" for i, g in enumerate(sketch.Geometry)
+            if g.TypeId == "Part::GeomPoint"]
+
+
+def _vertex_named(obj, sub):
+    """A picked vertex ``sub`` of ``obj`` named as picked ("Wire's Vertex3"); a sketch's with
+    the element it ends ("Profile's Vertex3, the start of 2-Arc")."""
+    said = f"{obj.Label}'s {sub}"
+    if not is_sketch(obj):
+        return said
+    from .links import END, START, sketch_geo_of_element
+    at = sketch_geo_of_element(obj, sub)
+    if at is None or at[1] not in (START, END):
+        return said
+    return f"{said}, the {'start' if at[1] == START else 'end'} of {element_name(obj, at[0])}"
 
 
 def _is_line(e):

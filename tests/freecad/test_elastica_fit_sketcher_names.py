@@ -1,0 +1,129 @@
+"""freecadcmd -t test: a Fit's warnings name a point as the Sketcher shows it. The Sketcher's
+Elements panel numbers a sketch's geometry from 1 in the order drawn, lines, arcs and
+construction geometry included ('1-Line', '2-Arc', '3-Point', checked on FreeCAD 0.20.2 under
+xvfb); the warnings named a point by its place among the sketch's points alone ('point 11 as
+given'), which is not the panel's number where the sketch also holds edges, or where
+coincident points were merged. Now: "Mixed's 14-Point"; a file's point by its line in the file
+("line 17 of scan.csv"), titles, headers, comments and blank lines counted."""
+import os
+import tempfile
+import unittest
+
+import numpy as np
+
+import FreeCAD as App
+import Part
+
+import elastica_samples as S
+from freecad.elastica import fit as Fi
+from freecad.elastica.units import say
+
+
+def _hand_sketch():
+    """20 points along a 380 mm curve (0.25 mm noise) at (1500, -800), the 12th (index 11)
+    6 mm across it: the outlier the Fit names."""
+    import libelastica as el
+    rng = np.random.default_rng(7)
+    c = el.SmoothElastica(x0=0, y0=0, phi=0.3, mu=(1 / 120.0) ** 2, k=0.6, q=0.2, length=380.0)
+    s = np.linspace(0, 380, 20)
+    pts = c.points(s) + rng.normal(0, 0.25, (20, 2))
+    th = float(c.angle([s[11]])[0])
+    pts[11] += 6.0 * np.array([-np.sin(th), np.cos(th)])
+    return pts + [1500.0, -800.0]
+
+
+class FitSketcherNamesTest(S.DocTest):
+    doc_name = "ElasticaFitSketcherNames"
+
+    def _mixed(self, pts, twice=()):
+        """A sketch drawn as a designer does: a line and an arc first, half the points, a
+        construction line, the other half (points ``twice`` drawn twice on the spot: merged
+        by the fit). Returns it and each point's geometry index."""
+        sk = self.doc.addObject("Sketcher::SketchObject", "Mixed")
+        sk.Placement = S.SKETCH_PLACEMENT
+        sk.addGeometry(Part.LineSegment(App.Vector(1400, -900, 0), App.Vector(1450, -900, 0)),
+                       False)
+        sk.addGeometry(Part.ArcOfCircle(Part.Circle(App.Vector(1400, -950, 0),
+                                                    App.Vector(0, 0, 1), 30), 0.0, 2.0), False)
+        at = []
+        for k, (x, y) in enumerate(pts):
+            if k == len(pts) // 2:
+                sk.addGeometry(Part.LineSegment(App.Vector(1400, -1000, 0),
+                                                App.Vector(1450, -1010, 0)), True)
+            at.append(sk.addGeometry(Part.Point(App.Vector(x, y, 0)), False))
+            if k in twice:
+                sk.addGeometry(Part.Point(App.Vector(x, y, 0)), False)
+        self.doc.recompute()
+        return sk, at
+
+    def _stray_said(self, f, model):
+        said = [w for w in say(list(f.Warnings)) if "outliers?" in w]
+        self.assertEqual(len(said), 1, (model, list(f.Warnings)))
+        return said[0]
+
+    def test_a_stray_among_a_line_an_arc_and_20_points_is_named_as_the_elements_panel(self):
+        pts = _hand_sketch()
+        sk, at = self._mixed(pts)
+        self.assertEqual(at[11], 14)      # 2 edges and a construction line drawn before it
+        for model in ("discrete", "smooth"):
+            f = Fi.make(self.doc, [(sk, [])], Model=model)
+            self.doc.recompute()
+            said = self._stray_said(f, model)
+            # main: '(point 12 as given, ...)', the Elements panel's 12-Point another
+            self.assertIn("(Mixed's 15-Point, in the sketch at (", said)
+            self.assertNotIn("as given", said)
+
+    def test_points_drawn_twice_are_merged_and_the_names_kept(self):
+        pts = _hand_sketch()
+        sk, at = self._mixed(pts, twice=(3, 8))
+        self.assertEqual(at[11], 16)
+        for model in ("discrete", "smooth"):
+            f = Fi.make(self.doc, [(sk, [])], Model=model)
+            self.doc.recompute()
+            self.assertEqual(len(f.DataPoints), 20)
+            self.assertIn("(Mixed's 17-Point, in the sketch at (", self._stray_said(f, model))
+
+    def test_picked_vertices_are_named_as_picked(self):
+        """Vertices picked one by one: a wire's by its vertex name, a sketch's polyline's
+        with the element the Elements panel lists it under (the first drawn ending there)."""
+        pts = _hand_sketch()
+        wire = S.polyline_3d(self.doc, pts, name="Wire")
+        sk = self.doc.addObject("Sketcher::SketchObject", "Profile")
+        sk.Placement = S.SKETCH_PLACEMENT
+        for a, b in zip(pts[:-1], pts[1:]):
+            sk.addGeometry(Part.LineSegment(App.Vector(*a, 0), App.Vector(*b, 0)), False)
+        self.doc.recompute()
+
+        def vertex(obj, p):
+            at = S.SKETCH_PLACEMENT.multVec(App.Vector(*p, 0))      # both placed by it
+            return next(f"Vertex{k + 1}" for k, v in enumerate(obj.Shape.Vertexes)
+                        if (v.Point - at).Length < 1e-6)
+        for obj, name in ((wire, "Wire's "), (sk, "Profile's ")):
+            subs = [vertex(obj, p) for p in pts]
+            picked = name + subs[11] + (", the end of 11-Line" if obj is sk else "")
+            for model in ("discrete", "smooth"):
+                f = Fi.make(self.doc, [(obj, subs)], Model=model)
+                self.doc.recompute()
+                self.assertIn(f"({picked}, ", self._stray_said(f, model))
+
+    def test_a_files_point_is_named_by_its_line(self):
+        pts = _hand_sketch()
+        rows = ["# hand sketch, mm", "Profile 7", "x,y", ""]
+        for k, (x, y) in enumerate(pts):
+            rows.append(f"{x:.4f},{y:.4f}")
+            if k == 4:
+                rows += ["", "# a second stroke"]
+        line = 1 + rows.index(f"{pts[11][0]:.4f},{pts[11][1]:.4f}")
+        self.assertEqual(line, 18)
+        with tempfile.TemporaryDirectory() as tmp:
+            path = os.path.join(tmp, "scan.csv")
+            with open(path, "w") as fh:
+                fh.write("\n".join(rows) + "\n")
+            for model in ("discrete", "smooth"):
+                f = Fi.make(self.doc, csv_file=path, Model=model)
+                self.doc.recompute()
+                self.assertIn("(line 18 of scan.csv, at (", self._stray_said(f, model))
+
+
+if __name__ == "__main__":
+    unittest.main()
