@@ -158,10 +158,7 @@ def _spline_deviation(bs, samples: np.ndarray, lo: float, hi: float, spans=None)
 def _edge_count_error(exc: EdgeCountError, n: int, build) -> EdgeCountError:
     """affine_polyline's EdgeCountError in g2_quadratic's name, with the fewest count
     that works (:func:`covering_edges` of ``build``) or None."""
-    with warnings.catch_warnings():
-        warnings.simplefilter("ignore", CoverageWarning)
-        warnings.simplefilter("ignore", EndTangentWarning)
-        more = covering_edges(build, n)
+    more = covering_edges(build, n)     # (its _plain builds: silent)
     return EdgeCountError(exc.status, f"g2_quadratic: {exc.cause}; " + (
         f"n = {more} works, the fewest above {n}" if more else
         f"no count up to {cover_search_limit(n)} works"), exc.cause, more)
@@ -242,10 +239,7 @@ def _paper_a_counts(n: int, build) -> str:
     """The words naming the fewest edge count above n whose G2 quadratic of the paper's A
     (fit_ends=False, ``build(m)``: partial, _plain) covers the source (covering_edges, every
     count in turn), or that none up to cover_search_limit(n) does."""
-    with warnings.catch_warnings():
-        warnings.simplefilter("ignore", CoverageWarning)
-        warnings.simplefilter("ignore", EndTangentWarning)
-        more = covering_edges(build, n)
+    more = covering_edges(build, n)     # (its _plain builds: silent)
     return (f"n = {more} works with fit_ends=False, the fewest above {n}" if more else
             f"no count up to {cover_search_limit(n)} works with fit_ends=False")
 
@@ -272,6 +266,21 @@ def _left_out(dropped, length: float, n: int, inflection: bool, short: Optional[
             "they stop at the inflection"] if inflection else []) + ([short] if short else [])
     return (f"g2_quadratic: the splines leave out {gone} of the source (length {length:.4g}): "
             + "; ".join(why))
+
+
+def _say(said: Optional[list], plain: bool, warning: Warning) -> None:
+    """g2_quadratic's ``warning``: none from a ``plain`` build (covering_edges' searches:
+    the error names the count), put in ``said`` where its caller collects them (a build in
+    a local frame, _built_locally, said again at g2_quadratic's caller), else warned at
+    g2_quadratic's caller. A flag and a list passed down, not warnings.catch_warnings: that
+    swaps the process's filters and showwarning, so another thread's warnings were caught
+    and said again or dropped (revA: 365 of a thread's 3000 said from g2quad_points)."""
+    if plain:
+        return
+    if said is not None:
+        said.append(warning)
+    else:                   # (1 here, 2 g2_quadratic, 3 its caller)
+        warnings.warn(warning, stacklevel=3)
 
 
 class CoverageWarning(RuntimeWarning):
@@ -375,7 +384,7 @@ def end_piece_left_out(ends: EndPieces, n: int, nsamples: int) -> bool:
 
 def g2_quadratic(curve_or_points, n: int, samples_per_vertex: int = 20, tangents=None,
                  fit: bool = False, partial: bool = False, *, end_curvatures=None,
-                 _plain: bool = False,
+                 _plain: bool = False, _said: Optional[list] = None,
                  **options) -> G2Quadratic:
     """Seed 002 end to end: approximate ``curve_or_points``, a SmoothElastica, a
     HermiteChain or an ElasticSpline (its pieces; a closed one opened at its point 0, its
@@ -401,7 +410,8 @@ def g2_quadratic(curve_or_points, n: int, samples_per_vertex: int = 20, tangents
     Raises ValueError / DomainError (straight source, noisy points: the message counts
     the sign changes of their discrete curvature, ...; n too small for an elastica:
     :class:`EdgeCountError`, with the fewest count that works; ``_plain``, private: as
-    affine_polyline raised it, for the search's builds), and
+    affine_polyline raised it, and silent, for the search's builds; ``_said``, private: a
+    list its warnings go to instead, _say), and
     :class:`CoverageError` when the splines would leave part of the source out (an end
     piece beyond an inflection too short for 3 edges), naming how much and the fewest
     edges that cover it (:func:`covering_edges`); ``partial=True`` returns that result
@@ -445,11 +455,16 @@ def g2_quadratic(curve_or_points, n: int, samples_per_vertex: int = 20, tangents
                              "end curvatures); a curve is built from as it is")
         from .fit import fit as fit_points
         fitted = fit_points(as_points(curve_or_points, "points"), model="smooth")
+        said = []           # the curve's build's warnings: said at this call's caller
         try:
-            g = g2_quadratic(fitted.curve, n, samples_per_vertex, partial=partial, **options)
+            g = g2_quadratic(fitted.curve, n, samples_per_vertex, partial=partial,
+                             _said=said, **options)
         except CoverageError as exc:
             exc.result.fit = fitted
             raise
+        finally:
+            for w in said:
+                _say(_said, _plain, w)
         g.fit = fitted
         return g
     k_given = _end_curvatures(end_curvatures, is_curve)
@@ -462,9 +477,9 @@ def g2_quadratic(curve_or_points, n: int, samples_per_vertex: int = 20, tangents
                              "tangent needs a direction (the curve's own there)")
     local = _local_source(curve_or_points, is_curve)
     if local is not None:   # far from (0, 0): built in a local frame, moved back (exactly)
-        return _built_locally(lambda src: g2_quadratic(
+        return _built_locally(lambda src, said: g2_quadratic(
             src, n, samples_per_vertex, tangents, partial=partial, end_curvatures=k_given,
-            _plain=_plain, **options), *local, CoverageError)
+            _plain=_plain, _said=said, **options), *local, CoverageError, _said)
     options.setdefault("fit_ends", True)
     if not is_curve:    # doubled rows: the real cause, not the C status's list (QA23)
         said = _repeated_points(as_points(curve_or_points, "points"))
@@ -750,13 +765,12 @@ def g2_quadratic(curve_or_points, n: int, samples_per_vertex: int = 20, tangents
                           f"{math.degrees(err):.3g} deg apart: {why}") if end == "seam" else
                          f"the spline's {end} tangent is {math.degrees(err):.3g} deg off the "
                          f"source's: {why}" for end, err, why in missed)
-        warnings.warn(EndTangentWarning(f"g2_quadratic ({n} edges): {said}",
-                                        tuple((end, err) for end, err, _ in missed)),
-                      stacklevel=2)
+        _say(_said, _plain, EndTangentWarning(f"g2_quadratic ({n} edges): {said}",
+                                              tuple((end, err) for end, err, _ in missed)))
     if not all(covers):
         what = _left_out(dropped, length, n, inflection, short)
         if partial:
-            warnings.warn(f"{what}; more edges cover it", CoverageWarning, stacklevel=2)
+            _say(_said, _plain, CoverageWarning(f"{what}; more edges cover it"))
             return g
         leaves_out = None
         if not is_curve and options["fit_ends"]:
@@ -769,13 +783,11 @@ def g2_quadratic(curve_or_points, n: int, samples_per_vertex: int = 20, tangents
                 leaves_out = lambda m: end_piece_left_out(ends_at, m, len(samples))  # noqa: E731
             except (ValueError, ArithmeticError):
                 pass
-        with warnings.catch_warnings():     # the counts tried: said by the error
-            warnings.simplefilter("ignore", CoverageWarning)
-            warnings.simplefilter("ignore", EndTangentWarning)
-            more = covering_edges(lambda m: g2_quadratic(
-                curve_or_points, m, samples_per_vertex, tangents, partial=True,
-                end_curvatures=k_given, _plain=True,
-                **options), n, leaves_out=leaves_out)
+        # the counts tried: said by the error (their _plain builds silent)
+        more = covering_edges(lambda m: g2_quadratic(
+            curve_or_points, m, samples_per_vertex, tangents, partial=True,
+            end_curvatures=k_given, _plain=True,
+            **options), n, leaves_out=leaves_out)
         top = cover_search_limit(n)
         raise CoverageError(f"{what}: " + (f"n = {more} covers it" if more else
                                            f"none of n = {n + 1} to {top} covers it (try more)")

@@ -181,21 +181,23 @@ def _moved(g, R: np.ndarray):
                                seam_bound=bound)
 
 
-def _built_locally(build, source, R: np.ndarray, coverage_error):
-    """build(source) (a G2Quadratic of the source moved by -R) moved back by R; its
-    warnings said again at the caller of g2_quadratic, a ``coverage_error``'s result moved
-    back too."""
-    said = []
+def _built_locally(build, source, R: np.ndarray, coverage_error, said=None):
+    """build(source, collected) (a G2Quadratic of the source moved by -R, its warnings put
+    in the list ``collected``) moved back by R; those warnings said again at the caller of
+    g2_quadratic, or put in ``said`` where that caller collects them (g2quad._say), a
+    ``coverage_error``'s result moved back too."""
+    collected = []
     try:
-        with warnings.catch_warnings(record=True) as said:
-            warnings.simplefilter("always")
-            return _moved(build(source), R)
+        return _moved(build(source, collected), R)
     except coverage_error as exc:
         exc.result = _moved(exc.result, R)
         raise
     finally:
-        for w in said:      # (1 here, 2 g2_quadratic, 3 its caller)
-            warnings.warn(w.message, stacklevel=3)
+        for w in collected:
+            if said is not None:
+                said.append(w)
+            else:           # (1 here, 2 g2_quadratic, 3 its caller)
+                warnings.warn(w, stacklevel=3)
 
 
 def _end_curvatures(given, is_curve: bool):
