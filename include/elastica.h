@@ -1266,8 +1266,9 @@ typedef struct el_spline_result {
                               the greatest tension below the one asked and the least above
                               it (reach: their lengths; 0 where none) */
     double largest[3];     /* tension mode, EL_ENOCONV at sigma x (longest span h)^2 >= 300:
-                              the largest tension (1/units^2) that solves these points without
-                              loops, sigma h^2 = min(asked, 1024) x 2^(-j/4) down to 100 then 3
+                              the highest tension (1/units^2) the search solved these points at
+                              without loops (no bound: near it the solve is not monotone, a
+                              tension a little below can fail; spline_limit.c), sigma h^2 = min(asked, 1024) x 2^(-j/4) down to 100 then 3
                               bisections in log above it (up to 18 solves, ~0.3-0.5 s,
                               within the call's work budget: stopped; spline_limit.c), that spline's resolution and the least |1 - k^2|
                               of its pieces (why none above it: Accuracy, el_spline_solve);
@@ -1504,7 +1505,8 @@ void el_spline_options_defaults(el_spline_options *opt);
  *     within ~exp(-sqrt(sigma / 2) h) of 1 (examples/ducks.csv's longest span: 1 - k^2 =
  *     -7e-9 at sigma h^2 500), its far end known to ~4.4e-16 / |1 - k^2| of its curvature
  *     (resolution 1.2e-7 at 450, 2.9e-7 at 500, 4e-7 at 520, none reached from 560).
- *     res->largest then holds the largest tension that solves (spline_limit.c), which the
+ *     res->largest then holds the highest tension the search solved (spline_limit.c;
+ *     not a bound: near it the solve is not monotone), which the
  *     Python binding's error names. In length mode
  *     these are lengths within ~1/5 of the free batten's excess over the
  *     polygon's length (0.1 - 0.2 % of it on hand-placed points).

@@ -1,5 +1,8 @@
 /*
- * The largest tension that solves (el_spline_result's largest; elastica.h, Accuracy):
+ * The largest tension that solves (el_spline_result's largest; elastica.h, Accuracy): the
+ * highest the search below solved, no bound: near it the solve is not monotone in the
+ * tension (examples/ducks.csv x 100 at sigma h^2 700: 0.0088357 found; of 41 tensions
+ * within 1 % of it 12 fail, 0.993 .. 0.9995 and 1.0065 .. 1.009 of it).
  * where tension mode fails (EL_ENOCONV) at sigma h^2 >= EL__SP_STIFF_SH2 on the longest
  * span h, the failure is looked at as the limit of what a double resolves: the nearly
  * straight runs' pieces have their modulus k within ~exp(-sqrt(sigma / 2) h) of 1, a

@@ -439,21 +439,24 @@ def _out_of_range(pts, chords) -> str:
 
 
 def _largest_text(res, span2) -> tuple:
-    """Where tension mode failed at a high tension, the library's search for the largest
-    tension that solves these points without loops (el_spline_result's largest,
-    spline_limit.c): (tension, its text), (None, '') where it did not look or found none."""
+    """Where tension mode failed at a high tension, the highest tension at which the
+    library's search solved these points without loops (el_spline_result's largest,
+    spline_limit.c; not a bound: near it the solve is not monotone): (tension, its text),
+    (None, '') where it did not look or found none."""
     sigma, resolution, kp2 = (float(res.largest[i]) for i in range(3))
     if not sigma > 0.0:
         return None, ""
     lo = sigma * span2
-    return sigma, (f"; the largest tension solved here is ~{sigma:.3g} (x (longest span)^2 = "
-            f"{lo:.3g}): beyond it the nearly straight runs between the ducks are pieces "
+    return sigma, (f"; the highest tension the search solved them at is ~{sigma:.3g} (x "
+            f"(longest span)^2 = {lo:.3g}; it found none above it, and near it the solve is "
+            f"not monotone: a tension a little below can fail, one a little above solve, so "
+            f"this is no bound): beyond it the nearly straight runs between the ducks are pieces "
             f"whose elliptic modulus k lies within ~exp(-sqrt(tension / 2) x span) of 1 "
             f"(|1 - k^2| = {kp2:.2g} there), which a double resolves only in steps of "
             f"~4.4e-16, so the far end of such a piece is known only to ~4.4e-16 / |1 - k^2| "
             f"of its curvature (its resolution there {resolution:.2g}, a residual within the "
-            f"lesser of it and 1e-7 accepted; ~2.3 x per +50 of tension x span^2): give a "
-            f"tension up to it")
+            f"lesser of it and 1e-7 accepted; ~2.3 x per +50 of tension x span^2): give "
+            f"that tension (largest_tension) or a lower one")
 
 
 def _digits_apart(x, *others):
@@ -544,10 +547,11 @@ def elastic_spline(points, tension: Optional[float] = None, length: Optional[flo
     (QA14) all solve up to 100, 22 at 200, 19 at 300 (to ~1e-9), 5 at 450, and tol 1e-7
     instead of 1e-10 solves no more of them at 450 (the rest reach nothing, or stay at
     ~2e-7 .. 6e-7 on nearly straight runs); from tension x (longest span)^2 = 300 on, where
-    none was accepted, its ``largest_tension`` (else None) and message name the largest
-    tension that solves these points (the library's search, el_spline_result's largest: a
-    few solves below the one asked, ~0.3-0.5 s) and why
-    none above it: the modulus k of the nearly straight runs' pieces is then within
+    none was accepted, its ``largest_tension`` (else None) and message name the highest
+    tension the library's search solved these points at (el_spline_result's largest: a
+    few solves below the one asked, ~0.3-0.5 s; that tension solves, but it is no bound:
+    near it the solve is not monotone, a tension a little below can fail) and why
+    none it tried above it did: the modulus k of the nearly straight runs' pieces is then within
     ~exp(-sqrt(tension / 2) span) of 1, which a double resolves only in steps of ~4.4e-16;
     with G2 ends by tension, its ``g2_met`` (below, above) names the G2 battens met nearest
     the tension asked, each (tension, length) or None (el_spline_result's ladder, reach),

@@ -146,10 +146,12 @@ def _solve(xy, mode, value, closed, start, end, max_iter=MAX_ITER):
             failure = f"no equilibrium found at Tension = {tension_mark(value, span, 6)}: {met}"
         elif largest:   # beyond what a double resolves (the binding's search, elastica.h Accuracy)
             failure = (f"no equilibrium found at Tension = {tension_mark(value, span, 6)}: "
-                       f"the largest tension that solves these points is about "
-                       f"{tension_mark(largest, span, 3)}; above it the nearly straight spans "
-                       "between the points are more than double precision resolves (the "
-                       "elliptic modulus of their pieces too near 1): give a tension up to it")
+                       f"the highest tension the search solved these points at is about "
+                       f"{tension_mark(largest, span, 3)}; it found none above it (the nearly "
+                       "straight spans between the points are then more than double precision "
+                       "resolves: the elliptic modulus of their pieces too near 1), but near "
+                       "it the solve is not monotone, so it is no bound: give a tension near "
+                       "it or lower, and another where one fails")
         elif isinstance(exc, e.LengthRangeError):   # the lengths reached, in the library's words
             failure = _library_message(exc)
         elif mode == "length":
