@@ -485,9 +485,8 @@ def _stand_off(curve, left: np.ndarray, rms: float) -> bool:
     60 off: the fit passed near them, the farthest 16 and 0 left out gave rms 2.23 under 3 x
     a noise figure the dragged points raised (0.787), yet lay 4.05 and 9.26 off the refit;
     8 and 9 lie 54 and 59 off theirs, rms 0.016)."""
-    from .g2dev import _curve_distance, _nearest_s
-    samples = curve.points(np.linspace(0.0, curve.length, 2001))
-    d, _ = _curve_distance(curve, left, _nearest_s(left, samples, curve.length))
+    from .nearest import curve_feet
+    d, _ = curve_feet(curve, left)
     return bool(np.all(d > MISFIT_RATIO * rms))
 
 

@@ -15,30 +15,150 @@ def np():
     return numpy
 
 
-def _newton_feet(bspline, data, t, steps=30):
-    """Each point's local nearest point on a B-spline from the parameters ``t``: Newton on
-    (B(t) - p) . B'(t) = 0, a step kept only where it brings the point closer, t within
-    the domain. Returns (t, B(t), squared distances)."""
+# The one foot search of the binding: coarse samples (a B-spline's sieved spans,
+# _nearest_feet; a curve's equal arc-length samples, curve_feet; the nearest of a few,
+# nearest_samples), then each foot refined in the bracket its samples give (refine_feet).
+# Written here, not scipy's minimize_scalar or GSL's gsl_min: the binding depends on numpy
+# alone (FreeCAD's Python has no scipy), the C library's feet (fit_feet.c) are internal
+# to its fits, and one vectorised search refines every point's foot at once.
+
+# refine_feet's iterations at most: its bisections halve a bracket to rounding in ~55
+FOOT_STEPS = 64
+# a Newton step this small against the bracket it began in ends the search (quadratic
+# convergence: the next would be ~1e-20 of it)
+FOOT_TOL = 1e-10
+# a Newton step this small is taken whether or not the point comes nearer: the squared
+# distances it changes by (~1e-14 of it) are the curve's evaluation's rounding, the slope
+# it follows is not (a foot kept to nearer points only stopped ~1e-7 off, slope 1e-7)
+FOOT_TRUST = 1e-6
+
+
+def bspline_at(bspline):
+    """refine_feet's ``at`` of a B-spline: B(t), and with ``derivatives`` B'(t), B''(t)."""
+    def at(t, derivatives=False):
+        P = bspline.evaluate(t)
+        return (P, bspline.derivative(t, 1), bspline.derivative(t, 2)) if derivatives else P
+    return at
+
+
+def curve_at(curve):
+    """refine_feet's ``at`` of a curve of arc length s (points / angle / curvature: a
+    SmoothElastica, HermiteChain, ElasticSpline): gamma(s), and with ``derivatives`` its unit
+    tangent T and kappa N."""
     n = np()
-    a, b = bspline.domain
-    t = n.clip(n.asarray(t, dtype=float), a, b)
-    P = bspline.evaluate(t)
+
+    def at(s, derivatives=False):
+        P = curve.points(s)
+        if not derivatives:
+            return P
+        th = curve.angle(s)
+        T = n.c_[n.cos(th), n.sin(th)]
+        return P, T, curve.curvature(s)[:, None] * n.c_[-T[:, 1], T[:, 0]]
+    return at
+
+
+def refine_feet(at, data, t, lo, hi):
+    """Each point's foot on a curve (``at``: bspline_at, curve_at) refined in its bracket:
+    the nearest point of data[i] in [lo[i], hi[i]] from t[i], where the squared distance
+    has one minimum in the bracket (a dip of coarse samples and its neighbours; elsewhere
+    the local minimum downhill of t). Safeguarded Newton on (C(t) - p) . C'(t) = 0 (its
+    derivative |C'|^2 + (C - p) . C''): each step's sign of the slope halves the bracket's
+    uphill side away, a step that leaves the bracket (or where the derivative is not
+    positive) is a bisection of the downhill side instead, and a trial point not nearer
+    bounds the bracket on its side (the next step from the same foot: a bisection). The
+    foot moves only where nearer, or by a Newton step below FOOT_TRUST of the bracket
+    (where the distances differ by rounding), so the result is never farther than t but
+    by rounding. Ends where a Newton step is below FOOT_TOL of the bracket, or the bracket
+    is rounding wide. Returns (t, C(t), squared distances)."""
+    n = np()
+    data = n.asarray(data, dtype=float)
+    lo = n.array(lo, dtype=float, copy=True) * n.ones(len(data))
+    hi = n.array(hi, dtype=float, copy=True) * n.ones(len(data))
+    t = n.clip(n.asarray(t, dtype=float), lo, hi)
+    P, D1, D2 = at(t, True)
     d2 = n.sum((P - data) ** 2, axis=1)
-    for _ in range(steps):
-        D1, D2 = bspline.derivative(t, 1), bspline.derivative(t, 2)
-        r = P - data
-        g = n.sum(r * D1, axis=1)
-        h = n.sum(D1 * D1, axis=1)
-        curv = h + n.sum(r * D2, axis=1)          # g's derivative: Newton where positive
-        h = n.where(curv > 0.0, curv, h)
-        tn = n.clip(t - g / n.maximum(h, 1e-300), a, b)
-        Pn = bspline.evaluate(tn)
-        dn = n.sum((Pn - data) ** 2, axis=1)
-        closer = dn < d2
-        if not closer.any():
+    width = hi - lo
+    tol = FOOT_TOL * width
+    live = n.arange(len(t))
+    failed = n.zeros(len(t), dtype=bool)     # the last trial from t was not nearer
+    for _ in range(FOOT_STEPS):
+        if not len(live):
             break
-        t, P, d2 = n.where(closer, tn, t), n.where(closer[:, None], Pn, P), n.where(closer, dn, d2)
+        tl, ll, hl = t[live], lo[live], hi[live]
+        r = P[live] - data[live]
+        g = n.sum(r * D1[live], axis=1)
+        h = n.sum(D1[live] ** 2, axis=1) + n.sum(r * D2[live], axis=1)
+        ll, hl = n.where(g < 0.0, tl, ll), n.where(g > 0.0, tl, hl)
+        tn = tl - g / n.where(h > 0.0, h, 1.0)
+        newton = (h > 0.0) & (tn >= ll) & (tn <= hl) & ~failed[live]
+        tn = n.where(newton, tn, n.where(g > 0.0, 0.5 * (ll + tl), 0.5 * (tl + hl)))
+        Pn, D1n, D2n = at(tn, True)
+        dn = n.sum((Pn - data[live]) ** 2, axis=1)
+        closer = dn < d2[live]
+        moved = closer | (newton & (n.abs(tn - tl) <= FOOT_TRUST * width[live]))
+        hl = n.where(~moved & (tn > tl), tn, hl)
+        ll = n.where(~moved & (tn < tl), tn, ll)
+        c = live[moved]
+        t[c], P[c], D1[c], D2[c], d2[c] = tn[moved], Pn[moved], D1n[moved], D2n[moved], dn[moved]
+        lo[live], hi[live], failed[live] = ll, hl, ~moved
+        done = ((newton & (n.abs(tn - tl) <= tol[live])) | (tn == tl)
+                | (hl - ll <= 4.0 * n.spacing(n.maximum(n.abs(ll), n.abs(hl)))))
+        live = live[~done]
     return t, P, d2
+
+
+def nearest_samples(data, samples):
+    """Each point's nearest of ``samples`` (k, 2), its index: argmin of |q|^2 - 2 q . p
+    about the samples' centre (no cancellation at large offsets), one matrix product for
+    1024 points (bounded memory; 4 x faster than the differences' squares summed)."""
+    n = np()
+    o = samples.mean(axis=0)
+    sm = samples - o
+    n2 = n.einsum("ij,ij->i", sm, sm)
+    out = n.empty(len(data), dtype=n.intp)
+    for a in range(0, len(data), 1024):
+        out[a:a + 1024] = n.argmin(n2[None, :] - 2.0 * ((data[a:a + 1024] - o) @ sm.T), axis=1)
+    return out
+
+
+# curve_feet's samples where the caller has none
+CURVE_SAMPLES = 257
+
+
+def curve_feet(curve, data, samples=None):
+    """Each point's nearest point on a curve of arc length (a SmoothElastica, HermiteChain,
+    ElasticSpline: points / angle / curvature / length): (distances, feet's s). Coarse
+    samples (``samples``, (k, 2) at equal arc length over [0, length], else CURVE_SAMPLES
+    of them), and every sample nearer the point than both its neighbours and within one
+    sample step of the nearest (|gamma(s) - p| moves at most |ds|: the nearest point lies
+    within half a step of a sample that near) refined in the bracket of its neighbours
+    (refine_feet); the nearest of those feet wins."""
+    n = np()
+    data = n.asarray(data, dtype=float)
+    L = float(curve.length)
+    if samples is None:
+        samples = curve.points(n.linspace(0.0, L, CURVE_SAMPLES))
+    k = len(samples)
+    step = L / (k - 1)
+    o = samples.mean(axis=0)
+    sm = samples - o
+    n2 = n.einsum("ij,ij->i", sm, sm)
+    who, at_j = [], []
+    for a in range(0, len(data), 1024):          # bounded (1024, k) tables
+        q = data[a:a + 1024] - o
+        d = n.sqrt(n.maximum(n2[None, :] - 2.0 * (q @ sm.T) + n.einsum("ij,ij->i", q, q)[:, None],
+                             0.0))
+        pad = n.pad(d, ((0, 0), (1, 1)), constant_values=n.inf)
+        dip = (d <= pad[:, :-2]) & (d <= pad[:, 2:]) & (d <= d.min(axis=1)[:, None] + step)
+        r, j = n.nonzero(dip)
+        who.append(r + a)
+        at_j.append(j)
+    p, j = n.concatenate(who), n.concatenate(at_j)
+    s, _, d2 = refine_feet(curve_at(curve), data[p], j * step, n.maximum(j - 1, 0) * step,
+                           n.minimum(j + 1, k - 1) * step)
+    order = n.lexsort((d2, p))                   # each point's nearest foot first
+    first = order[n.unique(p[order], return_index=True)[1]]
+    return n.sqrt(d2[first]), s[first]
 
 
 SPAN_SAMPLES = 16       # sample intervals per span that may hold a nearer point
@@ -116,23 +236,26 @@ def _nearer_spans(data, d2, spans, levels, margin):
 
 def _nearest_feet(bspline, data, t0):
     """Each point's NEAREST point on a B-spline (globally: not only the local minimum
-    Newton finds from ``t0``, which on a looping curve can be far from it, QA: 13.0 mm
-    reported where the curve passes 2.25 mm from the point). Newton from t0 gives a
-    distance the nearest point is within; only a span whose poles' hull lies nearer can
-    hold a nearer point (on a smooth curve: the foot's own span or two, unless the curve
-    comes back near the point). Those spans, sieved by ever smaller blocks of spans
-    (_nearer_spans), are sampled at SPAN_SAMPLES + 1 points, and Newton runs again
-    from each sample nearer than its neighbours; the nearest foot wins. Returns (t, B(t), squared
+    found from ``t0``, which on a looping curve can be far from it, QA: 13.0 mm
+    reported where the curve passes 2.25 mm from the point). The foot downhill of t0
+    (refine_feet over the domain) gives a distance the nearest point is within; only a
+    span whose poles' hull lies nearer can hold a nearer point (on a smooth curve: the
+    foot's own span or two, unless the curve comes back near the point). Those spans,
+    sieved by ever smaller blocks of spans (_nearer_spans), are the coarse samples
+    (SPAN_SAMPLES + 1 a span), and each sample nearer than its neighbours is refined in
+    their bracket (refine_feet); the nearest foot wins. Returns (t, B(t), squared
     distances); Part's distToShape gives the same feet to rounding (test_elastica_fit)."""
     n = np()
-    t, P, d2 = _newton_feet(bspline, data, t0)
+    at = bspline_at(bspline)
+    a, b = bspline.domain
+    t, P, d2 = refine_feet(at, data, t0, a, b)
     spans = _spans(bspline)
     t0s, t1s, lo, hi = spans[:4]
     # a nearer point must beat the local one by more than rounding (its own span passes)
     margin = 1e-12 * (1.0 + float(n.max(n.abs(data))) ** 2)
     levels = _sieve_levels(lo, hi)
     u = n.arange(SPAN_SAMPLES + 1) / SPAN_SAMPLES
-    seed_p, seed_t = [], []
+    seed_p, seed_t, seed_lo, seed_hi = [], [], [], []
     for c in range(0, len(data), 8192):            # bounded (8192, 64) tables
         pj, sj = _nearer_spans(data[c:c + 8192], d2[c:c + 8192], spans, levels, margin)
         pj += c
@@ -153,16 +276,25 @@ def _nearest_feet(bspline, data, t0):
             pad = n.column_stack([before, dd, after])
             low = (dd <= pad[:, :-2]) & (dd <= pad[:, 2:])
             low[:, -1] &= ~go_on                   # the next span's first sample
+            # each sample's neighbours' parameters (across a run's spans; a run's end: its
+            # own): a dip's bracket
+            tb, ta = ts[:, 0].copy(), ts[:, -1].copy()
+            tb[1:] = n.where(go_on[:-1], ts[:-1, -2], ts[1:, 0])
+            ta[:-1] = n.where(go_on[:-1], ts[1:, 1], ts[:-1, -1])
+            tpad = n.column_stack([tb, ts, ta])
             # every dip, the found foot's too: within a sample of it may lie another, nearer
             # minimum (a discrete fit's cubic of 12 spans 107 mm long: 14.584 mm reported
             # where the curve passes 14.343 mm from the point, 6 mm along it)
             r, i = n.nonzero(low)
             seed_p.append(p[r])
             seed_t.append(ts[r, i])
+            seed_lo.append(tpad[r, i])
+            seed_hi.append(tpad[r, i + 2])
     if not seed_p or not sum(len(x) for x in seed_p):
         return t, P, d2
     q = n.concatenate(seed_p)
-    tq, Pq, dq = _newton_feet(bspline, data[q], n.concatenate(seed_t))
+    tq, Pq, dq = refine_feet(at, data[q], n.concatenate(seed_t), n.concatenate(seed_lo),
+                             n.concatenate(seed_hi))
     order = n.lexsort((dq, q))                     # each point's nearest foot first
     first = order[n.unique(q[order], return_index=True)[1]]
     better = first[dq[first] < d2[q[first]]]
@@ -199,12 +331,7 @@ def nearest_on(bspline, data, seeds=256, with_t=False):
     t0s, t1s = _spans(bspline)[:2]
     k = n.append(t0s, t1s[-1:])
     k = k[n.unique(n.linspace(0, len(k) - 1, min(seeds, len(k))).round().astype(int))]
-    K = bspline.evaluate(k)
-    start = n.empty(len(data))
-    for i in range(0, len(data), 1024):          # bounded (1024, seeds) tables
-        d2 = n.sum((data[i:i + 1024, None, :] - K[None, :, :]) ** 2, axis=2)
-        start[i:i + 1024] = k[n.argmin(d2, axis=1)]
-    t, P, d2 = _nearest_feet(bspline, data, start)
+    t, P, d2 = _nearest_feet(bspline, data, k[nearest_samples(data, bspline.evaluate(k))])
     if with_t:
         return _signed(bspline, data, t, P, d2) + (t - bspline.domain[0],)
     return _signed(bspline, data, t, P, d2)

@@ -59,15 +59,15 @@ def test_the_stated_deviation_is_the_true_maximum(edges):
 
 @pytest.mark.parametrize("offset, scale", [(0.0, 1.0), (1e6, 1.0), (-3e8, 1e3), (5.0, 1e-4)])
 def test_nearest_sample_by_matrix_product_is_the_nearest(offset, scale):
-    """g2dev._nearest_s (|s|^2 - 2 s.p about the samples' centre) against every sample's
-    distance tried: the same nearest distance, at large offsets and extreme scales."""
-    from libelastica.g2dev import _nearest_s
+    """nearest.nearest_samples (|s|^2 - 2 s.p about the samples' centre) against every
+    sample's distance tried: the same nearest distance, at large offsets and extreme scales."""
+    from libelastica.nearest import nearest_samples
     c = el.SmoothElastica(x0=offset, y0=-offset, phi=0.3, mu=1.0 / scale ** 2, k=0.9, q=0.2,
                           length=4.0 * scale)
     S = np.linspace(0.0, c.length, 801)
     P = c.points(S)
     rng = np.random.default_rng(1)
     q = c.points(rng.uniform(0, c.length, 1500)) + rng.normal(0, 0.05 * scale, (1500, 2))
-    got = np.linalg.norm(c.points(_nearest_s(q, P, c.length)) - q, axis=1)
+    got = np.linalg.norm(P[nearest_samples(q, P)] - q, axis=1)
     want = np.sqrt(((P[None, :, :] - q[:, None, :]) ** 2).sum(axis=2)).min(axis=1)
     assert np.all(got <= want + 1e-9 * scale + 1e-15 * abs(offset))

@@ -1,0 +1,71 @@
+"""The binding's one foot search (nearest.py: coarse samples, then each foot refined in its
+samples' bracket): curve_feet against every point of a dense sampling of the curve (its
+plain counterpart), sparse and dense coarse samples, k across 1, extreme scales and
+offsets; refine_feet never moves a foot farther, and ends on the foot it brackets."""
+import numpy as np
+import pytest
+
+import libelastica as el
+from libelastica.nearest import bspline_at, curve_at, curve_feet, refine_feet
+
+DENSE = 20001
+
+
+def _dense(c, q):
+    """Each point's distance to the nearest of DENSE samples (an upper bound of the true
+    one, above it by at most the samples' sagitta) and that sample's s."""
+    s = np.linspace(0.0, c.length, DENSE)
+    P = c.points(s)
+    best, at = np.full(len(q), np.inf), np.zeros(len(q))
+    for a in range(0, DENSE, 5000):
+        d = np.sqrt(((P[None, a:a + 5000, :] - q[:, None, :]) ** 2).sum(axis=2))
+        j = np.argmin(d, axis=1)
+        nearer = d[np.arange(len(q)), j] < best
+        best[nearer], at[nearer] = d[np.arange(len(q)), j][nearer], s[a + j][nearer]
+    return best, at
+
+
+@pytest.mark.parametrize("k", [0.3, 0.999, 1.0, 1.001, 1.8])
+@pytest.mark.parametrize("offset, scale", [(0.0, 1.0), (1e6, 1.0), (-3e8, 1e3), (5.0, 1e-6)])
+@pytest.mark.parametrize("coarse", [9, None])
+def test_curve_feet_are_the_nearest_points(k, offset, scale, coarse):
+    c = el.SmoothElastica(x0=offset, y0=-offset, phi=0.3, mu=2.0 / scale ** 2, k=k, q=0.2,
+                          length=4.0 * scale)
+    rng = np.random.default_rng(3)
+    q = np.vstack([c.points(rng.uniform(0, c.length, 60)) + rng.normal(0, 0.05 * scale, (60, 2)),
+                   c.points(np.array([0.0, c.length])),          # on the curve, its ends
+                   c.points(np.array([0.0])) + rng.uniform(-3, 3, (30, 2)) * scale])
+    samples = None if coarse is None else c.points(np.linspace(0.0, c.length, coarse))
+    d, s = curve_feet(c, q, samples)
+    dense, _ = _dense(c, q)
+    rounding = 1e-13 * (abs(offset) + scale)     # (evaluation: ~1e-14 relative)
+    assert np.all((s >= 0.0) & (s <= c.length))
+    # the foot is a point of the curve at that distance, and no sample of the curve nearer
+    assert np.allclose(np.linalg.norm(c.points(s) - q, axis=1), d, rtol=0, atol=rounding)
+    assert np.all(d <= dense + rounding), np.max(d - dense)
+    # and the dense samples' nearest is not much farther (no nearer foot missed): a sample
+    # within half a step h of the true foot lies at most min(h, h^2 (1 + kappa d) / 2d) farther
+    h = 0.5 * c.length / (DENSE - 1)
+    kappa = 2.0 * k * np.sqrt(c.mu)
+    excess = np.minimum(h, h * h * (1.0 + kappa * d) / (2.0 * np.maximum(d, 1e-300)))
+    assert np.all(dense - d <= 1.01 * excess + rounding), np.max(dense - d - excess)
+
+
+def test_refine_feet_never_moves_a_foot_farther_and_ends_at_the_bracketed_foot():
+    # a B-spline and a curve, feet started anywhere in their bracket (the whole domain):
+    # the result is at least as near as the start, and its slope (C - p) . C' ~ 0 inside
+    c = el.SmoothElastica(x0=1.0, y0=2.0, phi=0.3, mu=1.0, k=1.3, q=0.4, length=6.0)
+    b = c.to_bspline(tol=1e-9)
+    rng = np.random.default_rng(7)
+    q = c.points(rng.uniform(0, c.length, 400)) + rng.normal(0, 0.4, (400, 2))
+    for at, (lo, hi) in ((curve_at(c), (0.0, c.length)), (bspline_at(b), b.domain)):
+        t0 = rng.uniform(lo, hi, len(q))
+        start = np.sum((at(t0) - q) ** 2, axis=1)
+        t, P, d2 = refine_feet(at, q, t0, lo, hi)
+        assert np.all(d2 <= start)
+        assert np.allclose(P, at(t), rtol=0, atol=1e-13) and np.allclose(d2, np.sum((P - q) ** 2, axis=1))
+        _, D1, _ = at(t, True)
+        slope = np.sum((P - q) * D1, axis=1) / np.linalg.norm(D1, axis=1)
+        inside = (t > lo + 1e-9) & (t < hi - 1e-9)
+        assert np.all(np.abs(slope[inside]) <= 1e-8 * (1 + np.sqrt(d2[inside]))), \
+            np.max(np.abs(slope[inside]))
