@@ -195,12 +195,12 @@ class CopyJoinedTest(S.DocTest):
         self.doc.recompute()
         self.assertEqual((len(other.Geometry), len(other.Constraints)), (1, 0))
 
-    def test_joints_the_sketch_refuses_are_taken_back_whole(self):
-        """join_ends' guard (no test before this review): the profile fully dimensioned and
-        the copy's start dimensioned by the designer, a joint there is redundant: both
-        joints are taken back, the geometry as it was, said in the report view."""
-        from freecad.elastica import geometry as G
-        sk = self.doc.addObject("Sketcher::SketchObject", "Dimensioned")
+    def _dimensioned(self, name):
+        """F4's profile fully dimensioned (line ends, arc centre, radius, angle; the arc may
+        still turn about its centre), its G2 blend written into it unjoined, the copy's start
+        dimensioned by the designer (DistanceX, DistanceY): a joint there is redundant, the
+        one at the copy's end is not."""
+        sk = self.doc.addObject("Sketcher::SketchObject", name)
         _line_arc(sk)
         for c in (Sketcher.Constraint("DistanceX", -1, 1, 0, 1, 1500),
                   Sketcher.Constraint("DistanceY", -1, 1, 0, 1, -800),
@@ -214,14 +214,57 @@ class CopyJoinedTest(S.DocTest):
         self.doc.recompute()
         b = Bl.make(self.doc, (sk, "Edge1"), (sk, "Edge2"), Continuity="G2")
         self.doc.recompute()
+        from freecad.elastica import geometry as G
         gi = G.write_to_sketch(b, sk)[0]
         p0 = sk.Geometry[gi].StartPoint
         sk.addConstraint(Sketcher.Constraint("DistanceX", -1, 1, gi, 1, p0.x))
         sk.addConstraint(Sketcher.Constraint("DistanceY", -1, 1, gi, 1, p0.y))
         self.doc.recompute()
         self.assertEqual(sk.solve(), 0)
+        return sk, b, gi
+
+    def test_a_joint_the_sketch_refuses_leaves_the_other(self):
+        """join_ends' guard (review of F4): the joint at the copy's dimensioned start is
+        redundant and taken back; the one at its end stays (on main both were thrown away),
+        the sketch solving as before and nothing moved; the report view says which end is
+        not joined and what holds it (the copy's start by its DistanceX, DistanceY, the
+        line's end by the designer's: not 'its edges' ends are held otherwise')."""
+        from freecad.elastica import geometry as G
+        sk, b, gi = self._dimensioned("Dimensioned")
+        n, before = len(sk.Constraints), _probe(sk)
+        said, added = S.console_output(lambda: G.join_ends(sk, [gi], Bl._joint_ends(b, sk)))
+        self.assertEqual(len(added), 1, said)
+        self.assertEqual(len(sk.Constraints), n + 1)
+        c = sk.Constraints[added[0]]
+        # the copy's end (PosId 2) on the arc's start (Edge2's, geometry 1, PosId 1)
+        self.assertEqual((c.Type, c.First, c.FirstPos, c.Second, c.SecondPos),
+                         ("Tangent", 1, 1, gi, 2))
+        self.assertEqual(sk.solve(), 0)
+        self.assertLess(max((p - q).Length for p, q in zip(before, _probe(sk))), 1e-9)
+        self.assertIn("the copy's start is not joined to Edge1's end by a Tangent constraint: "
+                      "the sketch would not solve with it (the copy's start is held by "
+                      "DistanceX, DistanceY and the edge's end is held by DistanceX, "
+                      "DistanceY); its other end is joined", said)
+        self.assertNotIn("edges' ends are held otherwise", said)
+        # the joint kept holds: the arc turned about its centre drags the copy's end along
+        self.doc.recompute()
+        self.assertEqual(sk.solve(), 0)
+
+    def test_joints_the_sketch_refuses_are_taken_back_whole(self):
+        """Both joints refused (the arc's start dimensioned as well): both taken back, the
+        geometry as it was, each said in the report view."""
+        from freecad.elastica import geometry as G
+        sk, b, gi = self._dimensioned("Dimensioned")
+        a = sk.Geometry[1].StartPoint
+        sk.addConstraint(Sketcher.Constraint("DistanceX", -1, 1, 1, 1, a.x))
+        sk.addConstraint(Sketcher.Constraint("DistanceY", -1, 1, gi, 2,
+                                             sk.Geometry[gi].EndPoint.y))
+        self.doc.recompute()
+        self.assertEqual(sk.solve(), 0)
         n, before = len(sk.Constraints), _probe(sk)
         said, added = S.console_output(lambda: G.join_ends(sk, [gi], Bl._joint_ends(b, sk)))
         self.assertEqual((added, len(sk.Constraints), sk.solve()), ([], n, 0))
         self.assertEqual(max((p - q).Length for p, q in zip(before, _probe(sk))), 0.0)
-        self.assertIn("the copy is not joined to the edges by Tangent constraints", said)
+        self.assertIn("the copy's start is not joined to Edge1's end", said)
+        self.assertIn("the copy's end is not joined to Edge2's end by a Tangent constraint", said)
+        self.assertNotIn("other end is joined", said)

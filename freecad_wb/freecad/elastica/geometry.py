@@ -418,9 +418,10 @@ def join_ends(sketch, ids, ends):
     The angle is locked to the ends' sense as written (the Sketcher's own autolock), so
     solving moves nothing. A joint already held by a Coincident or Tangent is left as it
     is (Copy into again). The sketch is solved: where it does not solve cleanly (conflicting
-    or redundant constraints: the edge's end held otherwise) or would move the copy, the
-    joints are taken back and the copy left unjoined, said in the report view. Returns the
-    constraints added (their indices)."""
+    or redundant constraints: an end held otherwise) or would move the copy, each joint is
+    tried alone and the one the sketch takes kept (one refused joint does not take the other
+    with it); each refused is said in the report view with the end held and by what (the
+    copy's end dimensioned, or the edge's). Returns the constraints added (their indices)."""
     import Sketcher
     original, geometry = sketch.Geometry, sketch.Geometry
     start = (ids[0], 1)
@@ -452,21 +453,65 @@ def join_ends(sketch, ids, ends):
         return []
     was = sketch.solve()        # a sketch redundant already stays so: not the joints' doing
     n0 = len(sketch.Constraints)
+
+    def clean():
+        """The sketch solves as before and moves nothing: (True, why not)."""
+        status = sketch.solve()
+        moved = max(((p - q).Length for g0, g1 in zip(before, sketch.Geometry)
+                     for p, q in zip(g0, _probe(g1))), default=0.0)
+        if status == was and moved <= JOINT_TOL * size:
+            return True, ""
+        return False, ("would not solve with it" if status != was else
+                       f"would move the geometry {moved:.3g} mm")
+
+    snapped_geometry = sketch.Geometry
     added = [sketch.addConstraint(Sketcher.Constraint("Tangent", *j)) for j in joints]
-    status = sketch.solve()
-    moved = max(((p - q).Length for g0, g1 in zip(before, sketch.Geometry)
-                 for p, q in zip(g0, _probe(g1))), default=0.0)
-    if status == was and moved <= JOINT_TOL * size:
+    if clean()[0]:
         return added
+    # one joint the sketch refuses does not take the other with it (review of F4): each
+    # tried alone, the good one kept
     for k in reversed(range(n0, len(sketch.Constraints))):
         sketch.delConstraint(k)
-    sketch.Geometry = original
-    App.Console.PrintWarning(
-        f"Elastica: {sketch.Label}: the copy is not joined to the edges by Tangent "
-        f"constraints: the sketch " + ("would not solve with them (its edges' ends are held "
-                                       "otherwise)" if status != was else
-                                       f"would move them {moved:.3g} mm") + "\n")
-    return []
+    sketch.Geometry = snapped_geometry
+    added, refused = [], []
+    for j in joints:
+        n = len(sketch.Constraints)
+        c = sketch.addConstraint(Sketcher.Constraint("Tangent", *j))
+        ok, why = clean()
+        if ok:
+            added.append(c)
+            snapped_geometry = sketch.Geometry
+            continue
+        for k in reversed(range(n, len(sketch.Constraints))):
+            sketch.delConstraint(k)
+        sketch.Geometry = snapped_geometry
+        refused.append(f"the copy's {'start' if j[3] == 1 else 'end'} is not joined to Edge"
+                       f"{j[0] + 1}'s end by a Tangent constraint: the sketch {why}"
+                       + (f" ({_held(sketch, j, n0)})" if why.startswith("would not") else ""))
+    if not added:
+        sketch.Geometry = original
+    App.Console.PrintWarning(f"Elastica: {sketch.Label}: " + "; ".join(refused) + (
+        "; its other end is joined" if added else "") + "\n")
+    return added
+
+
+def _held(sketch, joint, n0):
+    """Which end of the refused ``joint`` is held otherwise, by which constraints (those on
+    that point or on its whole geometry, the joints themselves left out): the copy's end
+    dimensioned by the designer is not the edge's end (review of F4)."""
+    g, pos, mine, mine_pos = joint
+
+    def on(geo, point):
+        types = []
+        for c in sketch.Constraints[:n0]:
+            refs = [(c.First, c.FirstPos), (c.Second, c.SecondPos), (c.Third, c.ThirdPos)]
+            if any(r == geo and p in (point, 0) for r, p in refs):
+                types.append(c.Type)
+        return types
+    said = [f"{who} by {', '.join(held)}" for who, held in (
+        (f"the copy's {'start' if mine_pos == 1 else 'end'} is held", on(mine, mine_pos)),
+        ("the edge's end is held", on(g, pos))) if held]
+    return " and ".join(said) or "its ends are held through other geometry"
 
 
 def _probe(g):
