@@ -111,3 +111,38 @@ class CombTogetherTest(S.DocTest):
         teeth = _teeth_at(comb, e.valueAt(e.LastParameter))
         self.assertEqual(len(teeth), 2, teeth)
         self.assertLess(abs(teeth[0] - teeth[1]), 1e-7 * teeth[0], teeth)
+
+    def test_source_deleted_the_first_of_more_sources_takes_its_place(self):
+        """Review of F5: the comb's Source object deleted while MoreSources holds two more:
+        the first of them becomes the Source and the comb is the comb of the two left, on
+        their own scale, said in Status and the report view (on main: 'error: ... nothing
+        read' with sources left)."""
+        docs = []
+        for name, y, rise in (("A", 0.0, 5.0), ("B", 100.0, 10.0), ("C", 200.0, 3.0)):
+            sk = self.doc.addObject("Sketcher::SketchObject", name)
+            sk.addGeometry(Part.ArcOfCircle(App.Vector(0, y, 0), App.Vector(25, y + rise, 0),
+                                            App.Vector(50, y, 0)), False)
+            docs.append(sk)
+        a, b, c = docs
+        self.doc.recompute()
+        comb = Co.make(self.doc, a, ["Edge1"], more=[(b, ["Edge1"]), (c, ["Edge1"])])
+        self.doc.recompute()
+        self.assertEqual(comb.Status, "ok")
+        # the comb of B and C alone, for reference
+        ref = Co.make(self.doc, b, ["Edge1"], more=[(c, ["Edge1"])])
+        self.doc.recompute()
+        said, _ = S.console_output(lambda: (self.doc.removeObject("A"), self.doc.recompute()))
+        self.assertIn("its Source was deleted: B, the first of MoreSources, is the Source now",
+                      said)
+        self.assertEqual(comb.Status, "ok (its Source was deleted: B, the first of "
+                         "MoreSources, is the Source now)")
+        self.assertEqual((comb.Source[0].Name, list(comb.Source[1])), ("B", ["Edge1"]))
+        self.assertEqual([(o.Name, list(s)) for o, s in comb.MoreSources], [("C", ["Edge1"])])
+        self.assertAlmostEqual(comb.UsedScale, ref.UsedScale, delta=1e-9 * ref.UsedScale)
+        self.assertEqual(len(comb.Shape.Edges), len(ref.Shape.Edges))
+        # the next edit: the comb as it is now, nothing more to say
+        comb.Samples = 40
+        self.doc.recompute()
+        self.assertEqual(comb.Status, "ok")
+        # the last source deleted too, and C's: nothing left is still the error it was
+        self.assertEqual(S.status_once_deleted(comb, b, c).split(":")[0], "error")

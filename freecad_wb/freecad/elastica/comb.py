@@ -240,6 +240,9 @@ class CombProxy(FeatureProxy):
 
     def compute(self, obj):
         """comb_core's (teeth per curve, scale); raises InputProblem."""
+        self._promoted = ""
+        if not obj.Source and any(src is not None for src, _ in obj.MoreSources):
+            self.promote(obj)
         if not obj.Source:
             raise nothing_read("an Elastica result or some edges", "Source")
         element = followed_reader(obj, "Source")      # renames Source: read it after
@@ -258,6 +261,21 @@ class CombProxy(FeatureProxy):
                 return first(src, name) if src == mine else others(src, name)
         return comb_core(obj.Source[0], obj.Source[1], obj.Samples, obj.Scale, element, more)
 
+    _promoted = ""      # said in Status after the comb that promote made (report view: at once)
+
+    def promote(self, obj):
+        """Source emptied (its object deleted) while MoreSources still holds sources: the first
+        of them becomes the Source, the comb recomputed over what remains and said in the
+        report view (review of F5: the comb was in error 'nothing read' with sources left)."""
+        followed_reader(obj, "MoreSources")     # their names as the geometry they follow now
+        left = [(src, tuple(subs)) for src, subs in obj.MoreSources if src is not None]
+        (src, subs), rest = left[0], left[1:]
+        obj.MoreSources = rest
+        obj.Source = (src, [n for n in subs if n])
+        self._promoted = (f"its Source was deleted: {src.Label}, the first of MoreSources, is "
+                          "the Source now")
+        App.Console.PrintWarning(f"Elastica {obj.Label}: {self._promoted}\n")
+
     def apply(self, obj, r):
         teeth, scale = r
         shapes = []
@@ -271,7 +289,7 @@ class CombProxy(FeatureProxy):
             return
         set_shape(obj, Part.makeCompound(shapes))
         obj.UsedScale = scale
-        obj.Status = "ok"
+        obj.Status = f"ok ({self._promoted})" if self._promoted else "ok"
 
 
 def make(doc, source, subs=(), more=(), **props):
