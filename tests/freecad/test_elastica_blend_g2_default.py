@@ -4,6 +4,7 @@ the G1 solution's 206.8 mm; the fairest G2 blend of its branch between the two l
 (fewest inflections, then bending energy x length) is shown instead and said, and the
 Solutions rows say what is drawn. Where the free batten is about the G1 length it stays."""
 import math
+import re
 
 import FreeCAD as App
 import Part
@@ -118,3 +119,48 @@ class BlendG2DefaultTest(S.DocTest):
         self.assertIn("shown instead", b.Status)
         self.assertLess(b.BlendLength, before)          # shorter as the gap closes
         self.assertGreater(b.BlendLength, before - 3.0)
+
+    def test_words_the_user_can_act_on(self):
+        """Review of F10's texts: the Tension and Length tooltips say what 0 asks at G2 (not
+        always the free batten); the shown blend's tension (-0.00098/mm^2, pushed together)
+        is not offered to type back, a G2 Tension being >= 0: the Status names the Length
+        that gives it, which length mode reproduces; the panel's lines (units.outer_parts)
+        do not break the note's parenthesis; one format for the rows' energies (0.0997 and
+        0.1028 both '0.10', not '0.100' and '0.10')."""
+        from freecad.elastica import units as U
+        sk = self.line_arc()
+        b = Bl.make(self.doc, (sk, "Edge1"), (sk, "Edge2"), Continuity="G2")
+        self.doc.recompute()
+        for prop in ("Tension", "Length"):
+            tip = b.getDocumentationOfProperty(prop)
+            self.assertIn("the fairest G2 blend between the two lengths, which Status names", tip)
+        self.assertLess(b.BlendTension, 0.0)
+        self.assertNotIn("at tension -", b.Status)
+        self.assertIn("pushed together: Tension 0 keeps it, and so does Solve for a length",
+                      b.Status)
+        said = re.search(r"tension -0\.00098 1/mm\u00b2 \(pushed together, which a G2 Tension "
+                         r"cannot ask: Solve for a length keeps this blend, Length ([0-9.]+) mm\)",
+                         b.Status)
+        self.assertIsNotNone(said, b.Status)
+        parts = U.outer_parts(b.Status)
+        self.assertEqual(len(parts), 4, parts)
+        self.assertTrue(parts[0].endswith("free batten may be its own)"), parts[0])
+        self.assertTrue(all(p.count("(") == p.count(")") for p in parts), parts)
+        # the Length said gives this blend again, in length mode
+        shown = b.Shape.Edges[0].copy()
+        b.Mode, b.Length = "length", float(said.group(1))
+        self.doc.recompute()
+        e = b.Shape.Edges[0]
+        self.assertLess(max(shown.distToShape(Part.Vertex(p))[0] for p in e.discretize(100)),
+                        1e-4)
+        self.assertNotIn("pushed together, which", b.Status)   # length mode: nothing to say
+        # the rows: the G2 blend of solution 2 (energy 0.0997/mm) written as solution 1's
+        # (0.1028/mm): '0.10' both
+        b.Mode, b.Tension = "tension", 0.0
+        self.doc.recompute()
+        self.assertIn("energy 0.10/mm, 2 inflections", Bl.g2_rows(b)[0])
+        b.Solution = 2
+        self.doc.recompute()
+        self.assertIn("(free batten)", b.Status)
+        self.assertIn("drawn: the G2 blend bent from it, 392.57 mm, energy 0.10/mm",
+                      Bl.g2_rows(b)[1])

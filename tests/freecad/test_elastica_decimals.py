@@ -49,6 +49,18 @@ class DecimalsTest(unittest.TestCase):
         self.prefs.SetInt("Decimals", d)
         self.assertEqual(U.decimals(), d)
 
+    def test_a_number_rounded_past_its_decade_keeps_the_format(self):
+        """Review of F10: the G2 blend's row printed energy 0.100 for 0.0997 (its lead digit
+        taken before rounding) and 0.10 for 0.1002: one format, the lead digit as written."""
+        for d, want in ((2, ("0.10", "0.10", "0.099", "1.00", "0.0000010")),
+                        (6, ("0.0997000", "0.100200", "0.0990000", "0.999000", "9.99600e-07"))):
+            self.at(d)
+            self.assertEqual(tuple(U.number_text(x) for x in
+                                   (0.0997, 0.1002, 0.099, 0.999, 9.996e-7)), want)
+        self.at(2)
+        self.assertEqual(U.number_text(0.0995, bound="up"), "0.10")
+        self.assertEqual(U.number_text(0.0995, bound="down"), "0.099")
+
     def test_numbers_as_freecad_writes_them(self):
         want = {2: ("151.00", "0.50", "0.0012", "-0.00066", "0.00", "2.7e-07", "1234.57"),
                 6: ("151.000000", "0.500000", "0.00123457", "-0.000657000", "0.000000",

@@ -18,8 +18,8 @@ from .blend_g2 import g2_blend, g2_tension_reach
 from .geometry import (binding_module, edge_end, el, global_element, is_sketch,
                        nearest_parameter, np, part_bspline, plane_coordinates, to_3d)
 from .links import followed_edge
-from .units import (length_mark, length_text, length_unit_mark, number_text, per_area_mark,
-                    per_length,
+from .units import (length_mark, length_text, length_unit_mark, mm_marked, number_text,
+                    per_area_mark, per_length,
                     per_length_mark, tension_mark, tension_or_zero,
                     tension_unit_mark)
 from .proxy import (FeatureProxy, InputProblem, add_enum, add_geometry_index, add_length,
@@ -32,6 +32,9 @@ CONTINUITIES = ["G1", "G2"]
 BSPLINE_DEGREE = 5          # a blend's B-spline: few poles at the preference tolerance
 RESULT_LISTS = ("Lengths", "Energies", "Tensions", "Inflections", "Loops", "MaxCurvatures",
                 "Turns", "Descriptions")
+# what Tension 0 and Length 0 ask at G2 (the tooltips: not always the free batten, F10)
+G2_FREE_TIP = ("G2: the free G2 batten, or where it is a far longer loop than its G1 "
+               "solution the fairest G2 blend between the two lengths, which Status names")
 G2_TIP = ("G1: one elastica, tangent to both edges. G2: tangent and curvature continuous at "
           "both joins. One elastica cannot meet both curvatures (8 conditions, 7 parameters), "
           "so the G2 blend is the batten between the two ends held by two guide ducks, a "
@@ -323,10 +326,10 @@ class BlendProxy(FeatureProxy):
                  "batten) or a given arc length", MODES, "tension")
         add_length(obj, "Length", "Blend",
                    "Arc length of the blend in length mode; 0 = the length of the "
-                   "lowest-energy free batten", 0.0)
+                   "lowest-energy free batten (" + G2_FREE_TIP + ")", 0.0)
         add_per_area(obj, "Tension", "Blend",
-                     "Tension sigma in tension mode (1/mm^2; 0 = free batten, negative = "
-                     "compression)", 0.0)
+                     "Tension sigma in tension mode (1/mm^2; 0 = free batten (" +
+                     G2_FREE_TIP + "), negative = compression, G1 only)", 0.0)
         add_enum(obj, "Continuity", "Blend", G2_TIP, CONTINUITIES, "G1")
         add_property(obj, "App::PropertyInteger", "Solution", "Blend",
                      "Which solution, by bending energy, as the panel's list and Status "
@@ -560,6 +563,10 @@ class BlendProxy(FeatureProxy):
             forces = ", ".join(per_area_mark(float(np().hypot(*f))) for f in sp.guide_forces)
             bends = plural(inflections(sp.pieces), "inflection")
             free = "" if tension_or_zero(sp.tension, sp.length) else " (free batten)"
+            if obj.Mode == "tension" and tension_or_zero(sp.tension, sp.length) < 0.0:
+                # a figure the Tension box refuses at G2 (>= 0): what gives this blend instead
+                free = (" (pushed together, which a G2 Tension cannot ask: Solve for a length "
+                        f"keeps this blend, Length {mm_marked(f'{sp.length:.9g} mm')})")
             # "; " parts: the panel shows one a line
             start = f"G2 from solution {i + 1} of {len(curves)}{followed}{r['g2_note']}" \
                 if curves else "G2 from the library's own start (no G1 solution at this tension)"

@@ -11,7 +11,7 @@ from . import blend as B
 from . import blend_start as BS
 from .geometry import is_sketch
 from .panelbase import Panel, said_now
-from .units import length_mark, unbroken
+from .units import length_mark, outer_parts, unbroken
 
 
 G2_LIST_TIP = (". G2: these are the G1 solutions; the G2 blend is bent from the one picked "
@@ -31,16 +31,18 @@ class BlendPanel(Panel):
         g = self.box("Elastic blend")
         self.warning_row(g)             # why the command did not start at the free batten
         self.mode = self.choice(g, "Solve for", "Mode", B.MODES, ["a length", "a tension"],
-                                "A tension (0: the free batten, the fairest curve) or a given "
-                                "arc length")
+                                "A tension (0: the free batten, the fairest curve; G2: see "
+                                "Tension) or a given arc length")
         self.length = self.number(g, "Length", "Length", 0.0, 1e7, 1.0, "mm",
-                                  "Arc length of the blend (mm); 0 = the free batten's length. In "
-                                  "tension mode: the chosen solution's length",
+                                  "Arc length of the blend (mm); 0 = the free batten's length (" +
+                                  B.G2_FREE_TIP + "). In tension mode: the chosen solution's "
+                                  "length",
                                   when=lambda: o.Mode == "length")
         self.tension = self.number(g, "Tension", "Tension", -1e6, 1e6, self.tension_step(),
-                                   "1/mm\u00b2", "Tension sigma (1/mm\u00b2): 0 = free batten, > 0 "
-                                   "pulls the curve straighter (G1; a G2 blend is held by its "
-                                   "guide ducks: see Continuity), < 0 compresses it. In length "
+                                   "1/mm\u00b2", "Tension sigma (1/mm\u00b2): 0 = free batten (" +
+                                   B.G2_FREE_TIP + "), > 0 pulls the curve straighter (G1; a "
+                                   "G2 blend is held by its guide ducks: see Continuity), < 0 "
+                                   "compresses it (G1 only). In length "
                                    "mode: the chosen solution's tension", when=lambda: o.Mode == "tension")
         self.end1 = self.check(g, "Leave edge 1 at its end vertex", "AtEnd1",
                                "Checked: from the first edge's end vertex; else its start")
@@ -291,7 +293,7 @@ class BlendPanel(Panel):
 
     def result_text(self):
         o = self.obj
-        return "<br>".join(said_now(o, 'Status').split("; ") +
+        return "<br>".join(outer_parts(said_now(o, 'Status')) +
                            [f"B-spline: {o.Poles} poles, degree {o.Degree}"])
 
     def copy_code(self):

@@ -224,13 +224,17 @@ def fairer_along(pts, ends, sibling, free):
         return None
     (infl, fair), sp = best
     dist = float(np().linalg.norm(pts[1] - pts[0]))
+    # no tension to type back where it is below 0 (a G2 Tension is >= 0: review of F10); one
+    # parenthesis without '; ' (the panel breaks the Status at them: outer_parts)
+    pull = (f"at tension {tension_mark(sp.tension, dist, G2_TENSION_DIGITS)}"
+            if float(sp.tension) >= 0.0 else "pushed together")
     return sp, (f" (the free batten (tension 0) is {length_mark(b, 4)} long, bending energy "
                 f"\u00d7 length {free_key:.3g}: shown instead the fairest between it and the G1 "
                 f"solution's {length_mark(a, 4)}, {length_mark(sp.length, 6)}, "
-                f"{plural(infl, 'inflection')}, energy \u00d7 length {fair:.3g}, at tension "
-                f"{tension_mark(sp.tension, dist, G2_TENSION_DIGITS)}: Tension 0 keeps it, a "
-                "Length is solved from that length's own G1 solution; bent from a longer G1 "
-                "solution the free batten may be its own)")
+                f"{plural(infl, 'inflection')}, energy \u00d7 length {fair:.3g}, {pull}: "
+                "Tension 0 keeps it, and so does Solve for a length at its length, which the "
+                "switch copies; another Length is solved from that length's own G1 solution, "
+                "and bent from a longer G1 solution the free batten may be its own)")
 
 
 # golden-section steps refining the best of the ALONG_STEPS lengths within its two grid

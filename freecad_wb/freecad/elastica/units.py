@@ -50,7 +50,11 @@ def number_text(x, at_least=None, bound=None):
     keep = max(d, 1, int(at_least or 0))
     if x == 0.0 or not math.isfinite(x):
         return f"{0.0 if x == 0.0 else x:.{d}f}"
-    lead = math.floor(math.log10(abs(x)))
+    # the lead digit of x as written (keep significant digits, rounded as it will be): 0.0997
+    # is '0.10' as 0.1002 is, not '0.100' (one number, one format: review of F10's rows)
+    shown_x = float(f"{x:.{keep - 1}e}") if not bound else \
+        (ceil_digits if bound == "up" else floor_digits)(x, keep)
+    lead = math.floor(math.log10(abs(shown_x)))
     if lead < -6:
         if bound:
             x = (ceil_digits if bound == "up" else floor_digits)(x, keep)
@@ -172,6 +176,22 @@ def unbroken(text):
     allows a break after a '/' and at every space."""
     text = re.sub(r"(?<=\d) (?=\S)", "\u00a0", text)
     return re.sub(r"/(?=\w)", "/\u2060", text)
+
+
+def outer_parts(text, sep="; "):
+    """``text`` split at each ``sep`` outside parentheses: a Status's parts, one a panel
+    line, without breaking a note's parenthesis at a '; ' of its own (review of F10: '...G1
+    solution<br>bent from a longer ...)')."""
+    parts, depth, start, i = [], 0, 0, 0
+    while i < len(text):
+        c = text[i]
+        depth += (c == "(") - (c == ")" and depth > 0)
+        if depth == 0 and text.startswith(sep, i):
+            parts.append(text[start:i])
+            i = start = i + len(sep)
+            continue
+        i += 1
+    return parts + [text[start:]]
 
 
 def unit_names(text):
