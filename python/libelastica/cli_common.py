@@ -233,11 +233,15 @@ def dxf_units(path, unit: Optional[str], args) -> str:
     """The DXF's $INSUNITS (a key of io.DXF_UNITS) for a file whose header names ``unit``
     (io.read_points_unit; None: none): --units where given ('none' too: an untagged
     drawing), else the header's where DXF has it, else 'none'. A --units naming another
-    unit than the header's of ``path`` (``args`` the command's) is an InputError naming both."""
+    unit than the header's of ``path`` (``args`` the command's) is an InputError naming both,
+    one DXF cannot say too (km, yd: QA revD, 'x [km]' with --units m made a drawing 1000 x
+    too small); a header's px, of no size, may be given one."""
     from .io import DXF_UNITS
     given = getattr(args, "units_given", getattr(args, "units", None))
-    if given not in (None, "none") and unit in DXF_UNITS and unit != given:
+    if given not in (None, "none") and unit not in (None, "px") and unit != given:
         raise InputError(f"{path}: --units {given} but its header gives the coordinates in "
-                         f"{unit}: drop --units (the header's {unit} tags the DXF) or fix "
-                         "the header")
+                         f"{unit}: drop --units (" + (
+                             f"the header's {unit} tags the DXF" if unit in DXF_UNITS else
+                             f"DXF's --units cannot say {unit}: the drawing is left unitless")
+                         + ") or fix the header")
     return given if given is not None else unit if unit in DXF_UNITS else "none"

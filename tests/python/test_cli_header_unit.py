@@ -94,3 +94,11 @@ def test_units_conflicting_with_the_header_are_refused_naming_both(tmp_path, cap
     mixed = _ship(tmp_path, header="x [mm],y [m]", name="mixed.csv")
     code, _, err = cli(capsys, "fit", mixed)
     assert code == 2 and "two units, 'mm'" in err and "'m' ('y [m]')" in err, err
+    # a unit DXF cannot say is no license for another (QA revD: 'x [km]' with --units m
+    # tagged the drawing m, 1000 x too small); a pixel has no size: any unit may be given
+    km = _ship(tmp_path, header="x [km],y [km]", name="km.csv")
+    code, _, err = cli(capsys, "fit", km, "--dxf", tmp_path / "k.dxf", "--units", "m")
+    assert code == 2 and "--units m but its header gives the coordinates in km" in err, err
+    assert not (tmp_path / "k.dxf").exists()
+    px = _ship(tmp_path, header="x [px],y [px]", name="px.csv")
+    assert cli(capsys, "fit", px, "--dxf", tmp_path / "p.dxf", "--units", "mm")[0] == 0
