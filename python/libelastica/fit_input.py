@@ -14,16 +14,43 @@ __all__ = []
 EXTENT_LO, EXTENT_HI = 1e-150, 1e150
 
 
+# points nearer than this many units in the last place of the points' largest coordinate
+# are one point to the fit (QA revD: [0, 0], [1, 1], [1, 1 + 2 eps], [1 + 2 eps, 1] passed
+# as 4 distinct points and "fitted" a curve of rms 9e-16 through 2)
+ROUNDING_ULPS = 16
+# a refusal names at most this many of each point's repeats (QA revD: 100 000 rows of two
+# points alternating made a message of 689 000 characters)
+SAID_REPEATS = 8
+
+
 def _runs(idx) -> str:
-    """'2 to 4', '2, 4', '3' of ascending indices (a run of 3 or more as 'a to b')."""
+    """'2 to 4', '2, 4', '3' of ascending indices (a run of 3 or more as 'a to b'); past
+    SAID_REPEATS items, '..., N in all'."""
     out, i = [], 0
-    while i < len(idx):
+    while i < len(idx) and len(out) < SAID_REPEATS:
         j = i
         while j + 1 < len(idx) and idx[j + 1] == idx[j] + 1:
             j += 1
         out += [f"{idx[i]} to {idx[j]}"] if j - i >= 2 else [str(v) for v in idx[i:j + 1]]
         i = j + 1
+    if i < len(idx) or len(out) > SAID_REPEATS:
+        return ", ".join(out[:SAID_REPEATS]) + f", ... ({len(idx)} in all)"
     return ", ".join(out)
+
+
+def _distinct(x, y, tol: float, need: int, owner=None) -> list:
+    """The first index of each of up to ``need`` points of (x, y) more than ``tol`` apart
+    (in x or in y) from every earlier one; ``owner`` (optional, filled) gives each row the
+    first index it repeats."""
+    firsts, new = [], np.ones(len(x), dtype=bool)
+    while len(firsts) < need and new.any():
+        i = int(np.argmax(new))
+        firsts.append(i)
+        near = (np.abs(x - x[i]) <= tol) & (np.abs(y - y[i]) <= tol)
+        if owner is not None:
+            owner[new & near] = i
+        new &= ~near
+    return firsts
 
 
 def require_distinct(pts: np.ndarray, name: str = "fit", need: int = 4) -> None:
@@ -31,31 +58,37 @@ def require_distinct(pts: np.ndarray, name: str = "fit", need: int = 4) -> None:
     distinct ones in more rows, naming the repeats (QA qapy F6: [[0, 0]] + 4 x [[1, 1]] said
     only "singular or degenerate input", [0, 0], [1, 1] alternating "fitted" a curve of rms
     4e-14): "only 2 distinct points (points 2 to 4 repeat point 1, (1, 1)): need at least 4".
-    All points equal is :func:`fit`'s SingularError (they name no curve at all). ``name``:
-    the caller's, before the message. At most ``need`` passes over the points (none where
-    the first 64 rows hold ``need`` distinct ones)."""
+    Points within ROUNDING_ULPS units in the last place of the largest coordinate of each
+    other are one (equal to rounding: no curve can be told from them). All points equal is
+    :func:`fit`'s SingularError (they name no curve at all). ``name``: the caller's, before
+    the message. One pass for the points' size, then none where the first 4 (or 64) rows
+    hold ``need`` distinct points, else at most ``need`` passes."""
     n = len(pts)
     if n < need:
         raise ValueError(f"{name}: need at least {need} points, got {n}")
-    if len({tuple(p) for p in pts[:need].tolist()}) == need or \
-            len({tuple(p) for p in pts[:64].tolist()}) >= need:    # (almost any data: ~2 us)
+    tol = ROUNDING_ULPS * np.spacing(max(float(pts.max()), -float(pts.min())))
+    head = pts[:need].tolist()
+    if all(abs(p[0] - q[0]) > tol or abs(p[1] - q[1]) > tol
+           for a, p in enumerate(head) for q in head[a + 1:]):     # (almost any data)
         return
     x, y = pts[:, 0], pts[:, 1]     # (columns apart: np.any(axis=1) of (n, 2) is 10 x slower)
-    firsts, new = [], np.ones(n, dtype=bool)
-    while len(firsts) < need and new.any():
-        i = int(np.argmax(new))
-        firsts.append(i)
-        new &= (x != x[i]) | (y != y[i])
+    if len(_distinct(x[:64], y[:64], tol, need)) == need:
+        return
+    owner = np.full(n, -1)
+    firsts = _distinct(x, y, tol, need, owner)
     if len(firsts) == need or len(firsts) == 1:
         return
-    said = []
+    said, rounded = [], False
     for i in firsts:
-        rep = np.flatnonzero((x == x[i]) & (y == y[i]))[1:].tolist()
-        if rep:
-            said.append(f"point{'s' * (len(rep) > 1)} {_runs(rep)} repeat{'s' * (len(rep) == 1)}"
-                        f" point {i}, ({pts[i, 0]:.10g}, {pts[i, 1]:.10g})")
-    raise ValueError(f"{name}: only {len(firsts)} distinct points in {n} ({'; '.join(said)}): "
-                     f"need at least {need}")
+        rep = np.flatnonzero(owner == i)[1:]
+        rounded = rounded or bool(np.any((x[rep] != x[i]) | (y[rep] != y[i])))
+        if len(rep):
+            said.append(f"point{'s' * (len(rep) > 1)} {_runs(rep.tolist())} "
+                        f"repeat{'s' * (len(rep) == 1)} point {i}, "
+                        f"({pts[i, 0]:.10g}, {pts[i, 1]:.10g})")
+    how = f"; equal to rounding, within {tol:.3g}" if rounded else ""
+    raise ValueError(f"{name}: only {len(firsts)} distinct points in {n} ({'; '.join(said)}"
+                     f"{how}): need at least {need}")
 
 
 def explain_input_status(st: int, pts: np.ndarray, name: str = "fit") -> None:

@@ -17,6 +17,7 @@ import pytest
 import libelastica as el
 from cli_run import cli
 from fit_data import polygon_distances, uneven_scan
+from libelastica.fit_input import require_distinct
 from libelastica.io import read_points
 
 EX = Path(__file__).resolve().parents[2] / "examples"
@@ -50,6 +51,31 @@ def test_two_distinct_points_in_five_rows_are_refused_as_too_few(model):
         r = el.fit(np.array([[0, 0], [0, 0], [1, 0.5], [2, 0.8], [3, 0.9], [3, 0.9]], float),
                    model=model)
     assert r.curve is not None
+
+
+@pytest.mark.parametrize("model", ["discrete", "smooth"])
+def test_points_equal_to_rounding_are_one_and_many_repeats_are_counted(model):
+    """QA revD: points a few units in the last place apart passed as distinct ([0, 0], [1, 1],
+    [1, 1 + 2 eps], [1 + 2 eps, 1] "fitted" a curve of rms 9e-16 through 2 points), and
+    100 000 rows of 2 points alternating made a message of 689 000 characters."""
+    e = np.finfo(float).eps
+    cases = [[[0, 0], [1, 1], [1, 1 + 2 * e], [1 + 2 * e, 1], [1, 1]],
+             [[0, 0], [1, 1], [0, 1e-300], [1, 1], [1e-300, 0]],
+             [[5e8, -3e8], [5e8 + 1e-7, -3e8], [5e8 + 7e-6, -3e8], [5e8, -3e8 - 1e-7],
+              [5e8, -3e8 - 7e-6]]]          # ulp(5e8) = 6e-8: 3 points, each twice
+    for pts in cases:
+        with pytest.raises(ValueError, match=r"^fit: only [23] distinct points in 5 \(.*; "
+                           r"equal to rounding, within [0-9.e-]+\): need at least 4$"):
+            el.fit(np.array(pts, dtype=float), model=model)
+    big = np.tile([[0.0, 0.0], [1.0, 1.0]], (50_000, 1))
+    with pytest.raises(ValueError) as exc:
+        el.fit(big, model=model)
+    said = str(exc.value)
+    assert len(said) < 400 and "(49999 in all) repeat point 0, (0, 0)" in said, said
+    # points far apart at a large offset, and tiny data near 0, are still distinct
+    t = np.linspace(0.0, 1.0, 6)
+    for xy in (np.c_[1e7 + t, 2e6 + t * t], np.c_[1e-9 * t, 1e-9 * t ** 3]):
+        require_distinct(xy)
 
 
 def test_the_cli_says_the_repeats_of_a_file(tmp_path, capsys):
