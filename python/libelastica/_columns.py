@@ -49,6 +49,19 @@ def header_unit(labels, name: str = "points") -> Optional[str]:
     return next(iter(units), None)
 
 
+def not_a_table(data: bytes, name: str) -> Optional[str]:
+    """io.read_points' message for a JSON, DXF or SVG/XML document given as points, by its
+    first bytes after a BOM ('{' or '[', '0' then 'SECTION', '<'), None for anything else
+    (review revD: a DXF said 'line 1118: 2 columns where 3717 of 3730 rows have 1 (an empty
+    cell?)', a fit's JSON 'line 10: not a number: ']'': a table's messages)."""
+    head = (data[3:] if data.startswith(b"\xef\xbb\xbf") else data).lstrip()[:64]
+    kind = "JSON" if head[:1] in (b"{", b"[") else "SVG / XML" if head[:1] == b"<" else \
+        "DXF" if re.match(rb"0\s*\n\s*SECTION\b", head) else None
+    return None if kind is None else (
+        f"{name}: a {kind} document, not a table of points: give x, y (z) per line (comma, "
+        "semicolon, tab or space separated) or .npy")
+
+
 def column_labels(a) -> Optional[List]:
     """A table's column labels (a structured dtype's field names, a DataFrame-like
     ``columns``), None for anything else (arrays, lists)."""

@@ -18,7 +18,7 @@ from typing import Any, Dict, Optional, Union
 
 import numpy as np
 
-from ._columns import axis_columns, header_unit
+from ._columns import axis_columns, header_unit, not_a_table
 
 __all__ = ["InputError", "read_input", "looks_like_json", "read_points", "read_points_unit",
            "curve_to_dict",
@@ -586,6 +586,9 @@ def _read_points_unit(path: PathLike, min_points: int = 3, data: Optional[bytes]
         if lines is not None and arr.ndim == 2:
             lines.extend(range(1, arr.shape[0] + 1))
     else:
+        said = not_a_table(data, name)     # a JSON, DXF or SVG given as points (revD)
+        if said:
+            raise InputError(said)
         arr, unit = _parse_text(_decode(data, name), name, thousands, lines)
     if arr.ndim != 2 or arr.shape[1] not in (2, 3):
         raise InputError(f"{name}: need 2 or 3 columns (x,y or x,y,z), got shape {arr.shape}")

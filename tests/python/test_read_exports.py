@@ -156,3 +156,23 @@ def test_x_y_z_lines_of_a_plane_curve_at_unit_x_are_read(tmp_path, sep):
     varying = "".join(sep.join(f"{v:g}" for v in (i, x, y)) + "\n" for i, (x, y) in enumerate(PTS))
     with pytest.raises(InputError, match="one per row"):
         read_points(_write(tmp_path, "e.xyz", varying))
+
+
+def test_a_json_dxf_or_svg_given_as_points_is_named_so(tmp_path, capsys):
+    """A drawing or a JSON given where points go (review revD: a DXF said 'line 1118: 2 columns
+    where 3717 of 3730 rows have 1 (an empty cell?)', a fit's JSON 'line 10: not a number:
+    ']'', an SVG 'no data rows ...'): each is named for what it is, by read_points and the CLI."""
+    docs = {"fit.json": '{\n  "model": "smooth",\n  "curve": {"x0": 0}\n}\n',
+            "pts.json": "[[0, 0], [1, 1], [2, 4], [3, 9]]\n",
+            "d.dxf": "  0\r\nSECTION\r\n  2\r\nHEADER\r\n  0\r\nENDSEC\r\n  0\r\nEOF\r\n",
+            "p.svg": '\ufeff<?xml version="1.0"?>\n<svg xmlns="http://www.w3.org/2000/svg"/>\n'}
+    for name, text in docs.items():
+        path = _write(tmp_path, name, text)
+        kind = {"json": "JSON", "dxf": "DXF", "svg": "SVG / XML"}[name.rsplit(".", 1)[1]]
+        with pytest.raises(InputError, match=f"a {kind} document, not a table of points"):
+            read_points(path)
+        code, _, err = cli(capsys, "spline", path)
+        assert code == 2 and f"a {kind} document, not a table of points" in err, err
+    # a table that starts with a number, a header or a comment is still one
+    for text in ("0,0\n1,1\n2,4\n", "x,y\n0,0\n1,1\n2,4\n", "# <points>\n0 0\n1 1\n2 4\n"):
+        assert read_points(_write(tmp_path, "t.csv", text)).shape == (3, 2)
