@@ -654,7 +654,7 @@ def _print_fit(rec: Dict[str, Any]) -> None:
                                                       if "side" in rec else ""))
         _print_uncertainty(rec)
     if rec.get("bspline"):
-        _print_bspline(rec["bspline"])
+        _print_bspline(rec["bspline"], unit=rec.get("unit"))
         if "fitted_points" not in rec:     # --step: the rms above is already the cubic's
             _print_cubic(rec, "points")
     print(f"status      {rec['status']}")
@@ -663,13 +663,15 @@ def _print_fit(rec: Dict[str, Any]) -> None:
 def _print_cubic(rec: Dict[str, Any], whose: str) -> None:
     """A discrete fit's B-spline's own distances to the points (_cubic_figures)."""
     if "bspline_rms" in rec:
-        print(f"            the {whose} lie rms {_fmt(rec['bspline_rms'])}, max "
-              f"{_fmt(rec['bspline_max_error'])} from it (the rms and max error above "
+        u = f" {rec['unit']}" if rec.get("unit") else ""     # the header's (F3; revD)
+        print(f"            the {whose} lie rms {_fmt(rec['bspline_rms'])}{u}, max "
+              f"{_fmt(rec['bspline_max_error'])}{u} from it (the rms and max error above "
               "are to the polygon)")
 
 
-def _print_bspline(b: Dict[str, Any], what: str = "") -> None:
-    dev = (f"max deviation {_fmt(b['max_deviation'])}" if b["max_deviation"] >= 0
+def _print_bspline(b: Dict[str, Any], what: str = "", unit: Optional[str] = None) -> None:
+    dev = (f"max deviation {_fmt(b['max_deviation'])}{' ' + unit if unit else ''}"
+           if b["max_deviation"] >= 0
            else "through the vertices (C2 cubic)")
     print(f"B-spline    {what}degree {b['degree']}, {len(b['poles'])} poles, {dev}")
 
@@ -696,7 +698,7 @@ def cmd_fit(args) -> int:
                       f"{_fmt(r['input_max_error'])}{u}"
                       f"   (the file's {r['input_points']} points to the keyline, in its plane)")
                 if doc.get("bspline"):
-                    _print_bspline(doc["bspline"], "of the keyline: ")
+                    _print_bspline(doc["bspline"], "of the keyline: ", doc.get("unit"))
                     _print_cubic(doc, "file's points")
         return EXIT_OK if all(r["converged"] for r in recs) else EXIT_NOCONV
     progress = _Progress(len(files), args.progress or sys.stderr.isatty())

@@ -49,6 +49,11 @@ def test_the_header_unit_shows_in_the_report_json_and_dxf(tmp_path, capsys):
     rms = [ln for ln in out.splitlines() if ln.startswith("rms ")][0]
     assert rms.split()[2] == "mm", rms
     assert [ln for ln in out.splitlines() if ln.startswith("max error")][0].endswith(" mm")
+    # the B-spline's figures too (review revD: 'max deviation 0.00737', 'lie rms 2.5, max 5.2')
+    assert [ln for ln in out.splitlines() if ln.startswith("B-spline")][0].endswith(" mm"), out
+    out = cli(capsys, "fit", path, "--bspline-tol", "0.01")[1]
+    lie = [ln for ln in out.splitlines() if "points lie rms" in ln][0]
+    assert lie.split("lie rms ")[1].split()[1] == "mm," and " mm from it" in lie, lie
     assert json.loads((tmp_path / "s.json").read_text())["unit"] == "mm"
     assert ezdxf.readfile(tmp_path / "s.dxf").header["$INSUNITS"] == 4       # mm
     # --units none: an untagged drawing, as asked; --units mm: the same unit, no conflict
