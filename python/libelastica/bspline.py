@@ -83,6 +83,9 @@ class BSpline(PortablePickle):
         self.mults = m.astype(np.int64)
         dev = math.nan if max_deviation is None else \
             as_real(max_deviation, "BSpline: max_deviation", finite=False)
+        if dev < 0 and dev != -1.0:     # -1: the C library's "unknown" (review revD: -0.5
+            raise ValueError(f"BSpline: max_deviation must be >= 0, NaN or -1 (unknown), "
+                             f"got {dev!r}")           # read NaN, a typo taken for unknown)
         self.max_deviation = dev if dev >= 0 else math.nan    # (QA qapy F11: -1 read as a number)
         self._check()
         self._c()  # validates (EL_EINVAL -> ElasticaError)
@@ -107,6 +110,14 @@ class BSpline(PortablePickle):
         """Without the cffi array of the last C view (it cannot be pickled or copied; _c
         makes one per call)."""
         return {k: v for k, v in self.__dict__.items() if k != "_cmults"}
+
+    def __setstate__(self, state):
+        """A pickle's or copy's state; one pickled before a5ff62c holds -1 for "unknown",
+        read NaN as the constructor reads it (review revD: it compared unequal to its
+        rebuilt self)."""
+        self.__dict__.update(state)
+        if not self.max_deviation >= 0:
+            self.max_deviation = math.nan
 
     # -- C view -------------------------------------------------------------
     def _c(self):

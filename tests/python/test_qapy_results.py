@@ -173,3 +173,20 @@ def test_svg_is_written_without_importing_matplotlib(tmp_path):
     assert out[-2:] == ["0", "False"], out
     text = svg.read_text()
     assert text.startswith("<?xml") and "<svg" in text and "<polyline" in text and "curvature" in text
+
+
+def test_a_negative_deviation_other_than_unknown_is_refused_and_old_pickles_read_nan():
+    """review revD of a5ff62c: BSpline(..., max_deviation=-0.5) read NaN (a typo taken for
+    'unknown'); a BSpline pickled before it holds -1.0 and compared unequal to its rebuilt
+    self (the constructor reads -1 as NaN)."""
+    import pickle
+    args = (1, [[0.0, 0.0], [1.0, 1.0]], [0.0, 1.0], [2, 2])
+    for bad in (-0.5, -2.0, -math.inf):
+        with pytest.raises(ValueError, match="max_deviation must be >= 0, NaN or -1"):
+            el.BSpline(*args, max_deviation=bad)
+    assert math.isnan(el.BSpline(*args, max_deviation=-1.0).max_deviation)
+    old = el.BSpline(*args, max_deviation=0.25)
+    old.max_deviation = -1.0                    # as a pickle of before a5ff62c holds it
+    back = pickle.loads(pickle.dumps(old))
+    assert math.isnan(back.max_deviation) and back == el.BSpline(*args)
+    assert pickle.loads(pickle.dumps(el.BSpline(*args, max_deviation=0.25))).max_deviation == 0.25
