@@ -62,6 +62,22 @@ def not_a_table(data: bytes, name: str) -> Optional[str]:
         "semicolon, tab or space separated) or .npy")
 
 
+def unit_words_joined(fields, width: int) -> list:
+    """A header line split at every blank ('x [mm]<TAB>y [mm]' or 'X (mm) Y (mm)' read as
+    whitespace separated: x, [mm], y, [mm]) with each bracketed word joined to the name
+    before it, where that makes ``width`` fields; else ``fields`` (review revD: such a
+    header named no columns, so its unit was lost)."""
+    if len(fields) == width:
+        return fields
+    out = []
+    for f in fields:
+        if out and re.fullmatch(r"[\[(].*[\])]", f):
+            out[-1] += " " + f
+        else:
+            out.append(f)
+    return out if len(out) == width else fields
+
+
 def column_labels(a) -> Optional[List]:
     """A table's column labels (a structured dtype's field names, a DataFrame-like
     ``columns``), None for anything else (arrays, lists)."""

@@ -18,7 +18,7 @@ from typing import Any, Dict, Optional, Union
 
 import numpy as np
 
-from ._columns import axis_columns, header_unit, not_a_table
+from ._columns import axis_columns, header_unit, not_a_table, unit_words_joined
 
 __all__ = ["InputError", "read_input", "looks_like_json", "read_points", "read_points_unit",
            "curve_to_dict",
@@ -177,6 +177,7 @@ def _parse_text(text: str, name: str, thousands: Optional[str] = None,
                          f"{counts[width]} of {len(rows)} rows have {width} (an empty cell?)"
                          f"{hint}")
     # by the header's names, as the binding's tables are; else by position
+    header = header if header is None or delim is not None else unit_words_joined(header, width)
     named = axis_columns(header) if header is not None and len(header) == width else None
     cols = named if named is not None else list(range(width))
     if named is None:

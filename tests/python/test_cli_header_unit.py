@@ -39,6 +39,26 @@ def test_read_points_unit_names_the_header_unit(tmp_path):
         read_points_unit(path)
 
 
+def test_a_tab_or_space_separated_header_with_units_names_its_columns(tmp_path):
+    """review revD: 'x [mm]<TAB>y [mm]' (a spreadsheet's tab export) and 'X (mm) Y (mm)' were
+    split at every blank, named no column: the unit was lost, and 'y [mm]<TAB>x [mm]' was
+    read by position, mirrored."""
+    rows = [(0.0, 1.0), (1.0, 2.0), (4.0, 3.0), (9.0, 5.0)]
+    for sep, header, unit, want in (
+            ("\t", "x [mm]\ty [mm]", "mm", rows), (" ", "X (mm) Y (mm)", "mm", rows),
+            ("\t", "y [in]\tx [in]", "in", [(b, a) for a, b in rows]),
+            (" ", "Punkt x [m] y [m]", "m", rows)):
+        path = tmp_path / "p.txt"
+        lines = [sep.join(([str(i)] if header.startswith("Punkt") else []) + [f"{a}", f"{b}"])
+                 for i, (a, b) in enumerate(rows)]
+        path.write_text(header + "\n" + "\n".join(lines) + "\n")
+        pts, got = read_points_unit(path)
+        assert got == unit and np.array_equal(pts, np.array(want)), (header, got, pts)
+    path.write_text("x [mm]\ty [m]\n0\t0\n1\t1\n2\t4\n")
+    with pytest.raises(InputError, match="two units"):
+        read_points_unit(path)
+
+
 def test_the_header_unit_shows_in_the_report_json_and_dxf(tmp_path, capsys):
     ezdxf = pytest.importorskip("ezdxf")
     path = _ship(tmp_path)
