@@ -435,9 +435,6 @@ typedef struct el_fit_options {
                             the rows and cannot reach the kept fit's objective at its recent rate */
     int figures;         /* 1: the result's median_distance and noise_quick are filled (the binding's
                             checks of every fit: one call instead of three); 0 (default): NaN, no cost */
-    int screen;          /* >= 1: the result's screen_* are el_order_screen's of xy by this step, its turn
-                            where the step is > 1 (the binding's order check in the fit's call); 0 or
-                            less (default): NaN */
 } el_fit_options;
 
 /* Fill *opt with the defaults above. */
@@ -467,8 +464,6 @@ typedef struct el_fit_discrete_result {
                                      the mean, (0.0 + lo + hi) / 2, as numpy's), input units; NaN
                                      without distances, or where max_error is not their largest */
     double noise_quick;           /* opt->figures: el_fit_noise_quick of xy, NaN where it fails */
-    double screen_extent, screen_length, screen_turn;   /* opt->screen: el_order_screen's extent,
-                                     length and turn of xy (NaN where not asked or it fails) */
 } el_fit_discrete_result;
 
 typedef struct el_fit_smooth_result {
@@ -479,7 +474,6 @@ typedef struct el_fit_smooth_result {
     int param_mode;               /* EL_PARAM_UNIFORM or EL_PARAM_CHORD: paired s_i / first feet */
     long wander_gap;              /* as el_fit_discrete_result's */
     double median_distance, noise_quick;   /* as el_fit_discrete_result's */
-    double screen_extent, screen_length, screen_turn;   /* as el_fit_discrete_result's */
 } el_fit_smooth_result;
 
 /*

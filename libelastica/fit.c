@@ -687,19 +687,12 @@ static int public_fit(int model, const double *xy, size_t n, const el_fit_option
     return st;
 }
 
-/* The result's figures and screen where opt asks them (el_fit_options.figures, .screen), else
- * NaN: screen[3] the extent, length and turn. */
+/* The result's figures where opt asks them (el_fit_options.figures), else NaN. */
 static void figures(const el_fit_options *opt, const double *xy, size_t n, const double *distances,
-                    double max_error, double *median, double *noise, double *screen)
+                    double max_error, double *median, double *noise)
 {
-    *median = *noise = screen[0] = screen[1] = screen[2] = NAN;
+    *median = *noise = NAN;
     if (opt && opt->figures) el__fit_figures(xy, n, distances, max_error, median, noise);
-    el_order_screen_result sc;
-    if (opt && opt->screen >= 1 && el_order_screen(xy, n, (size_t)opt->screen, opt->screen > 1, &sc) == EL_OK) {
-        screen[0] = sc.extent;
-        screen[1] = sc.length;
-        screen[2] = sc.turn;
-    }
 }
 
 /* The public wrappers: the result struct written only once a result exists. */
@@ -724,9 +717,7 @@ int el_fit_discrete(const double *xy, size_t n, const el_fit_options *opt,
     fo.status = fit_public_status(fo.status);
     FIT_PUBLISH(res, fo, el_discrete_params);
     res->wander_gap = gap;
-    double screen[3];
-    figures(opt, xy, n, distances, res->max_error, &res->median_distance, &res->noise_quick, screen);
-    res->screen_extent = screen[0]; res->screen_length = screen[1]; res->screen_turn = screen[2];
+    figures(opt, xy, n, distances, res->max_error, &res->median_distance, &res->noise_quick);
     return fo.status;
 }
 
@@ -751,9 +742,7 @@ int el_fit_smooth(const double *xy, size_t n, const el_fit_options *opt,
     fo.status = fit_public_status(fo.status);
     FIT_PUBLISH(res, fo, el_smooth_params);
     res->wander_gap = gap;
-    double screen[3];
-    figures(opt, xy, n, distances, res->max_error, &res->median_distance, &res->noise_quick, screen);
-    res->screen_extent = screen[0]; res->screen_length = screen[1]; res->screen_turn = screen[2];
+    figures(opt, xy, n, distances, res->max_error, &res->median_distance, &res->noise_quick);
     res->param_mode = fo.mode;
     return fo.status;
 }

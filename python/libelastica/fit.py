@@ -39,7 +39,7 @@ from .misfit import (MISFIT_RATIO, MisfitWarning, OutlierWarning, _Figures, _pla
 from .fit_retrace import retrace_gate
 from .fit_uncertainty import Uncertain
 from .order import (Retrace, curve_order, data_run_back, order_summary, ordering, passed_over,
-                    retrace_summary, run_back, screen_step, turn_back)
+                    retrace_summary, run_back, turn_back)
 
 _MODES = {"auto": 0, "uniform": 1, "chord": 2}
 _MODE_NAMES = {v: k for k, v in _MODES.items()}
@@ -350,7 +350,7 @@ def _set_constraints(o, model: str, n: int, constraints: Optional[Mapping[str, o
 
 
 def _options(model: str, n: int, fixed: Optional[Mapping[str, float]], bounds, tol, max_iter,
-             limited_memory, max_candidates, param, initial, distance, constraints, screen: int = 0):
+             limited_memory, max_candidates, param, initial, distance, constraints):
     names = DISCRETE_PARAMS if model == "discrete" else SMOOTH_PARAMS
     o = ffi.new("el_fit_options *")
     lib.el_fit_options_defaults(o)
@@ -381,8 +381,7 @@ def _options(model: str, n: int, fixed: Optional[Mapping[str, float]], bounds, t
         if distance not in _DISTANCES:
             raise ValueError(f"fit: distance must be one of {tuple(_DISTANCES)}, got {distance!r}")
         o.distance = _DISTANCES[distance]
-    # figures, screen: _fit's checks (the result's median |distance|, quick noise and order screen)
-    o.use_initial, o.figures, o.screen = (1 if initial is not None else 0), 1, screen
+    o.use_initial, o.figures = (1 if initial is not None else 0), 1   # figures: _fit's checks
     if fixed or bounds or tol is not None or max_iter is not None or max_candidates is not None:
         _check_option_ranges(o, model, names)   # (el_fit_options_defaults' are in range)
     _set_constraints(o, model, n, constraints)
@@ -613,13 +612,15 @@ def _fit(points, model: str = "discrete", fixed: Optional[Mapping[str, float]] =
     if order == "curve":
         idx = curve_order(pts)
         pts = np.ascontiguousarray(pts[idx])
+    else:
+        unordered = ordering(pts)
     kind = SmoothElastica if model == "smooth" else DiscreteElastica
     if initial is not None and not isinstance(initial, kind):
         raise ValueError(f"fit: initial must be a {kind.__name__} for the {model} model, got "
                          f"{type(initial).__name__}")
     try:   # options of the wrong shape (not a mapping, bounds not pairs, ...): ValueError
         o = _options(model, n, fixed, bounds, tol, max_iter, limited_memory, max_candidates, param,
-                     initial, distance, constraints, screen_step(n) if idx is None else 0)
+                     initial, distance, constraints)
         init = initial._c() if initial is not None else ffi.NULL
     except (TypeError, AttributeError) as exc:
         raise ValueError(f"fit: invalid option ({exc})") from None
@@ -632,7 +633,6 @@ def _fit(points, model: str = "discrete", fixed: Optional[Mapping[str, float]] =
     # C fit's, figures=1), for the checks of the fit (its points are the result's, or its free
     # fit's, a fit of the same points); res0's median |distance| for the outlier test
     fig, res0 = _Figures(pts, res.noise_quick), res
-    unordered = ordering(pts, screened=res) if idx is None else None   # (screened by the call)
     explain_input_status(st, pts)       # NaN / inf, an extent out of range: named (QA25 F5)
     if res.constraint and st in (lib.EL_EINVAL, lib.EL_EDOM):
         _raise_constraint(st, res.constraint, _conditions(constraints, fixed), constraints)

@@ -166,30 +166,19 @@ def out_of_order(points, ratio: float = ORDER_RATIO, screen: bool = True) -> Ord
     return ordering(_plane_points(points, "out_of_order"), ratio, screen)
 
 
-def screen_step(n: int) -> int:
-    """The step of :func:`ordering`'s screen of n points (every step-th point; 1: the whole
-    polyline): el.fit's el_fit_options.screen, so that its fit's call screens them too."""
-    return n // SCREEN_POINTS if n >= SCAN_POINTS else 1
-
-
-def ordering(xy, ratio: float = ORDER_RATIO, screen: bool = True, screened=None) -> Ordering:
+def ordering(xy, ratio: float = ORDER_RATIO, screen: bool = True) -> Ordering:
     """:func:`out_of_order` of points xy already checked (as_points: (n, 2) float64,
-    C-contiguous, finite): fit's, which has checked them. screened: a fit's C result of xy
-    whose screen_* are the screen's (el_fit_options.screen = :func:`screen_step`, screen
-    True; NaN: screened here), el.fit's: its call screened them."""
+    C-contiguous, finite): fit's, which has checked them."""
     n = len(xy)
     if n < 3:
         return Ordering(None, polyline_length(xy), float("nan"))
-    step = screen_step(n) if screen else 1
+    step = n // SCREEN_POINTS if screen and n >= SCAN_POINTS else 1
     # the screen first (every k-th point; no longer than the polyline): a screen within the
     # ratio, or one that turns as a curve does (a coil, a spiral: longer than ratio times
     # its extent however ordered; shuffled points' screen turns ~pi/2 a vertex), answers in
     # order without the whole polyline's length (given nan) nor curve_order (bench_fit.py's
     # 1000 noisy points on k = 1.3 paid its 16 ms in a 1 ms fit; el.fit runs this each time)
-    if screened is not None and screened.screen_extent == screened.screen_extent:
-        sc = _Screen(screened.screen_extent, screened.screen_length, screened.screen_turn)
-    else:
-        sc = _screen(xy, step, step > 1)
+    sc = _screen(xy, step, step > 1)
     if step > 1:
         if (not sc.length > ratio * sc.extent or not sc.turn > TURN_PER_VERTEX
                 or not _run_means_turn(xy, step) > TURN_PER_VERTEX):
@@ -216,13 +205,6 @@ def _run_means_turn(xy, step: int) -> float:
     m = len(xy) // step
     means = xy[:m * step].reshape(m, step, 2).mean(axis=1)
     return _screen(np.ascontiguousarray(means), 1, True).turn
-
-
-class _Screen(NamedTuple):
-    """el_order_screen_result's fields, from a fit's result (ordering's screened)."""
-    extent: float
-    length: float
-    turn: float
 
 
 def _screen(xy, step: int, turn: bool):

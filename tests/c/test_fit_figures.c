@@ -1,7 +1,6 @@
-/* el_fit_options.figures and .screen (the binding's checks of a fit in the fit's one call): the
- * result's median_distance is the median of |distances| (of the two middle ones the mean), its
- * noise_quick el_fit_noise_quick's figure of the points, its screen_* el_order_screen's of the
- * points by the step asked (the turn where it is > 1), to the bit; max_error is the largest
+/* el_fit_options.figures (the binding's checks of a fit in the fit's one call): the result's
+ * median_distance is the median of |distances| (of the two middle ones the mean), its
+ * noise_quick el_fit_noise_quick's figure of the points, to the bit; max_error is the largest
  * |distance| (what the binding's outlier test takes beside the median); asking them changes
  * nothing else of the fit (every field and every distance and foot the same bits); not asked,
  * or without distances, NaN. Both models, paired and orthogonal, noisy scans, one with a
@@ -44,16 +43,6 @@ static void data(int kind, size_t n, int uneven, double sigma, double drag, unsi
     xy[2 * (n / 3) + 1] += drag;
 }
 
-/* The result's screen_* against el_order_screen's (NaN turn where not measured). */
-static void check_screen(const double *got, const double *xy, size_t n, int step)
-{
-    el_order_screen_result sc;
-    ck_assert_int_eq(el_order_screen(xy, n, (size_t)step, step > 1, &sc), EL_OK);
-    ck_assert_double_eq(got[0], sc.extent);
-    ck_assert_double_eq(got[1], sc.length);
-    ck_assert(step > 1 ? got[2] == sc.turn : isnan(got[2]) && isnan(sc.turn));
-}
-
 /* One fit with and without figures: the same bits everywhere, the figures as defined. */
 static void check_fit(int smooth, int distance, const double *xy, size_t n)
 {
@@ -69,17 +58,13 @@ static void check_fit(int smooth, int distance, const double *xy, size_t n)
         memset(&r1, 0, sizeof r1);
         const int s0 = el_fit_smooth(xy, n, &o, NULL, &r0, d0, f0);
         o.figures = 1;
-        o.screen = 1 + (int)(n % 5);
         const int s1 = el_fit_smooth(xy, n, &o, NULL, &r1, d1, f1);
         ck_assert_int_eq(s0, s1);
-        ck_assert(isnan(r0.median_distance) && isnan(r0.noise_quick) && isnan(r0.screen_extent) &&
-                  isnan(r0.screen_length) && isnan(r0.screen_turn));
+        ck_assert(isnan(r0.median_distance) && isnan(r0.noise_quick));
         ck_assert_double_eq(r1.median_distance, median_abs(d1, n));
         ck_assert_double_eq(r1.noise_quick, noise);
-        check_screen((const double[]){r1.screen_extent, r1.screen_length, r1.screen_turn}, xy, n, o.screen);
         r1.median_distance = r0.median_distance;
         r1.noise_quick = r0.noise_quick;
-        r1.screen_extent = r0.screen_extent; r1.screen_length = r0.screen_length; r1.screen_turn = r0.screen_turn;
         ck_assert(memcmp(&r0, &r1, sizeof r0) == 0);
     } else {
         el_fit_discrete_result r0, r1;
@@ -87,20 +72,16 @@ static void check_fit(int smooth, int distance, const double *xy, size_t n)
         memset(&r1, 0, sizeof r1);
         const int s0 = el_fit_discrete(xy, n, &o, NULL, &r0, d0, f0);
         o.figures = 1;
-        o.screen = 1 + (int)(n % 5);
         const int s1 = el_fit_discrete(xy, n, &o, NULL, &r1, d1, f1);
         ck_assert_int_eq(s0, s1);
-        ck_assert(isnan(r0.median_distance) && isnan(r0.noise_quick) && isnan(r0.screen_extent) &&
-                  isnan(r0.screen_length) && isnan(r0.screen_turn));
+        ck_assert(isnan(r0.median_distance) && isnan(r0.noise_quick));
         ck_assert_double_eq(r1.median_distance, median_abs(d1, n));
         ck_assert_double_eq(r1.noise_quick, noise);
-        check_screen((const double[]){r1.screen_extent, r1.screen_length, r1.screen_turn}, xy, n, o.screen);
         double emax = 0.0;
         for (size_t i = 0; i < n; i++) emax = fabs(d1[i]) > emax ? fabs(d1[i]) : emax;
         ck_assert_double_eq(r1.max_error, emax);
         r1.median_distance = r0.median_distance;
         r1.noise_quick = r0.noise_quick;
-        r1.screen_extent = r0.screen_extent; r1.screen_length = r0.screen_length; r1.screen_turn = r0.screen_turn;
         ck_assert(memcmp(&r0, &r1, sizeof r0) == 0);
         /* without distances: no median, the noise figure all the same */
         ck_assert_int_eq(el_fit_discrete(xy, n, &o, NULL, &r1, NULL, NULL), s0);

@@ -1,9 +1,8 @@
-"""el.fit's checks from the C fit's figures (el_fit_options.figures, .screen): its quick noise
-figure, the median of |distances| and the order screen the fit's one call returns are the
-binding's own (misfit's _noise, _median.median of np.abs, order's _screen; ordering from them
-the same answer), and the outlier test screened by that median and the result's max_error
-warns exactly where far_points names points (noisy scans with and without points dragged off,
-both models, paired and by distance, sketches of few points; shuffled points)."""
+"""el.fit's checks from the C fit's figures (el_fit_options.figures): its quick noise figure
+and the median of |distances| the fit's one call returns are the binding's own (misfit's
+_noise, _median.median of np.abs), and the outlier test screened by that median and the
+result's max_error warns exactly where far_points names points (noisy scans with and
+without points dragged off, both models, paired and by distance, sketches of few points)."""
 import warnings
 
 import numpy as np
@@ -14,7 +13,6 @@ from libelastica._ffi import dptr, ffi, lib
 from libelastica._median import median
 from libelastica.fit import OUTLIER_FACTOR, far_points
 from libelastica.misfit import OutlierWarning, _noise
-from libelastica.order import _screen, ordering, screen_step
 
 
 def _sets():
@@ -44,19 +42,6 @@ def test_the_c_fits_figures_are_the_bindings(model):
         assert res.median_distance == median(np.abs(dist))
         assert res.max_error == np.abs(dist).max()
         assert res.noise_quick == _noise(pts, quick=True)
-        for step in (1, 3, screen_step(n)):
-            o.screen = step
-            assert call(dptr(pts), n, o, ffi.NULL, res, dptr(dist), dptr(foot)) == lib.EL_OK
-            sc = _screen(pts, step, step > 1)
-            assert (res.screen_extent, res.screen_length) == (sc.extent, sc.length)
-            assert res.screen_turn == sc.turn or (step == 1 and np.isnan(res.screen_turn) and np.isnan(sc.turn))
-        # the screen el.fit asks, and ordering's answer from it, shuffled points too
-        for P in (pts, pts[np.random.default_rng(n).permutation(n)]):
-            P = np.ascontiguousarray(P)
-            o.screen = screen_step(n)
-            assert call(dptr(P), n, o, ffi.NULL, res, dptr(dist), dptr(foot)) in (lib.EL_OK, lib.EL_ENOCONV,
-                                                                                    lib.EL_EMAXITER)
-            assert ordering(P, screened=res) == ordering(P)
 
 
 @pytest.mark.parametrize("model", ["discrete", "smooth"])
