@@ -325,7 +325,6 @@ el_fit_options fz_fit_options(fz_in *in)
     if (what & 128) o.max_iter = fz_int(in) % 201;
     const uint8_t more = fz_byte(in);
     if (more & 1) o.distance = fz_byte(in) % 8 == 0 ? fz_int(in) : fz_byte(in) % 3;
-    if (more & 4) o.figures = 1;      /* the result's figures (the binding's) */
     if (more & 2) {   /* constraints: the kinds, values moderate or adversarial */
         o.constraints = fz_byte(in) % 8 == 0 ? fz_int(in) : fz_byte(in);
         o.start_point[0] = fz_range(in, -5, 5); o.start_point[1] = fz_range(in, -5, 5);

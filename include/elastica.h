@@ -433,8 +433,6 @@ typedef struct el_fit_options {
     int exhaustive;      /* 1: with constraint rows, every start's Ipopt run goes to its own end (the plain
                             path, for comparison); 0 (default): a later start's run is stopped once it is near
                             the rows and cannot reach the kept fit's objective at its recent rate */
-    int figures;         /* 1: the result's median_distance and noise_quick are filled (the binding's
-                            checks of every fit: one call instead of three); 0 (default): NaN, no cost */
 } el_fit_options;
 
 /* Fill *opt with the defaults above. */
@@ -460,10 +458,6 @@ typedef struct el_fit_discrete_result {
     int constraint;               /* the enum el_fit_constraint bit not met or contradictory, else 0 */
     long wander_gap;              /* i: the curve wanders between points i and i+1 (below), -1: it
                                      follows its points (keyline sides: -1, not judged) */
-    double median_distance;       /* opt->figures: the median of |distances| (of the two middle ones
-                                     the mean, (0.0 + lo + hi) / 2, as numpy's), input units; NaN
-                                     without distances, or where max_error is not their largest */
-    double noise_quick;           /* opt->figures: el_fit_noise_quick of xy, NaN where it fails */
 } el_fit_discrete_result;
 
 typedef struct el_fit_smooth_result {
@@ -473,7 +467,6 @@ typedef struct el_fit_smooth_result {
     int iterations, candidates, ipopt_status, status, used_ipopt, distance, constraint;
     int param_mode;               /* EL_PARAM_UNIFORM or EL_PARAM_CHORD: paired s_i / first feet */
     long wander_gap;              /* as el_fit_discrete_result's */
-    double median_distance, noise_quick;   /* as el_fit_discrete_result's */
 } el_fit_smooth_result;
 
 /*

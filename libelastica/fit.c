@@ -687,14 +687,6 @@ static int public_fit(int model, const double *xy, size_t n, const el_fit_option
     return st;
 }
 
-/* The result's figures where opt asks them (el_fit_options.figures), else NaN. */
-static void figures(const el_fit_options *opt, const double *xy, size_t n, const double *distances,
-                    double max_error, double *median, double *noise)
-{
-    *median = *noise = NAN;
-    if (opt && opt->figures) el__fit_figures(xy, n, distances, max_error, median, noise);
-}
-
 /* The public wrappers: the result struct written only once a result exists. */
 int el_fit_discrete(const double *xy, size_t n, const el_fit_options *opt,
                     const el_discrete_params *initial, el_fit_discrete_result *res,
@@ -717,7 +709,6 @@ int el_fit_discrete(const double *xy, size_t n, const el_fit_options *opt,
     fo.status = fit_public_status(fo.status);
     FIT_PUBLISH(res, fo, el_discrete_params);
     res->wander_gap = gap;
-    figures(opt, xy, n, distances, res->max_error, &res->median_distance, &res->noise_quick);
     return fo.status;
 }
 
@@ -742,7 +733,6 @@ int el_fit_smooth(const double *xy, size_t n, const el_fit_options *opt,
     fo.status = fit_public_status(fo.status);
     FIT_PUBLISH(res, fo, el_smooth_params);
     res->wander_gap = gap;
-    figures(opt, xy, n, distances, res->max_error, &res->median_distance, &res->noise_quick);
     res->param_mode = fo.mode;
     return fo.status;
 }

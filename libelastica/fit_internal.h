@@ -332,9 +332,6 @@ static inline double fit_mean_distance(const double *dist, size_t n)
  * (v its parameters), near each point's own place, then wherever the curve comes nearer;
  * projected (smooth): d, fs hold the first already (el__fit_feet_distances at x); tmp:
  * FIT_WORK doubles. */
-/* el_fit_options.figures: the median of |d| and el_fit_noise_quick of xy (fit_noise.c) */
-void el__fit_figures(const double *xy, size_t n, const double *d, double max_error, double *median,
-                     double *noise);
 int el__fit_curve_distances(fit_objective *ob, const double *x, double v[2][FIT_NP], int projected, double *d,
                             double *fs, double *tmp);
 /* What a fit computed that its report (el__fit_wander_gap) needs again: of the points xy

@@ -378,25 +378,3 @@ double el__fit_noise_plain(const double *xy, size_t n, double sc)
 {
     return distinct_figure(xy, n, sc, FIGURE_PLAIN);
 }
-
-/* The figures el_fit_options.figures asks for a fit's result (fit.c's public wrappers): the
- * median of |d| by GSL's median of a copy (for even n (lo + hi) / 2 of the middle two, equal to
- * numpy's (0.0 + lo + hi) / 2 for values >= +0), NaN without d or memory, where it is not
- * finite, or where max_error is not the largest |d| (a check whose screen takes both: the
- * binding's outlier test); el_fit_noise_quick of xy, NaN where it fails. */
-void el__fit_figures(const double *xy, size_t n, const double *d, double max_error, double *median,
-                     double *noise)
-{
-    double *a = d && n > 0 ? malloc(sizeof(double) * n) : NULL, emax = 0.0;
-    *median = NAN;
-    if (a) {
-        for (size_t i = 0; i < n; i++) {
-            a[i] = fabs(d[i]);
-            if (a[i] > emax) emax = a[i];
-        }
-        const double med = gsl_stats_median(a, 1, n);   /* quickselect; reorders a */
-        if (emax == max_error && isfinite(med)) *median = med;
-        free(a);
-    }
-    if (el_fit_noise_quick(xy, n, noise) != EL_OK) *noise = NAN;
-}

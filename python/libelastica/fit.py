@@ -381,7 +381,7 @@ def _options(model: str, n: int, fixed: Optional[Mapping[str, float]], bounds, t
         if distance not in _DISTANCES:
             raise ValueError(f"fit: distance must be one of {tuple(_DISTANCES)}, got {distance!r}")
         o.distance = _DISTANCES[distance]
-    o.use_initial, o.figures = (1 if initial is not None else 0), 1   # figures: _fit's checks
+    o.use_initial = 1 if initial is not None else 0
     if fixed or bounds or tol is not None or max_iter is not None or max_candidates is not None:
         _check_option_ranges(o, model, names)   # (el_fit_options_defaults' are in range)
     _set_constraints(o, model, n, constraints)
@@ -614,6 +614,10 @@ def _fit(points, model: str = "discrete", fixed: Optional[Mapping[str, float]] =
         pts = np.ascontiguousarray(pts[idx])
     else:
         unordered = ordering(pts)
+    # the points' noise figures, computed once where a test below asks them: the check of a
+    # fit in the points' order, of points that turn back, the misfit verdict (its points are
+    # these: the result's, or its free fit's, a fit of the same points)
+    fig = _Figures(pts)
     kind = SmoothElastica if model == "smooth" else DiscreteElastica
     if initial is not None and not isinstance(initial, kind):
         raise ValueError(f"fit: initial must be a {kind.__name__} for the {model} model, got "
@@ -624,15 +628,11 @@ def _fit(points, model: str = "discrete", fixed: Optional[Mapping[str, float]] =
         init = initial._c() if initial is not None else ffi.NULL
     except (TypeError, AttributeError) as exc:
         raise ValueError(f"fit: invalid option ({exc})") from None
-    smooth, res = model == "smooth", ffi.new(f"el_fit_{model}_result *")
-    res.median_distance = res.noise_quick = math.nan    # (NaN: not filled, as on an error)
+    smooth = model == "smooth"
+    res = ffi.new(f"el_fit_{model}_result *")
     dist, foot = np.empty(n), np.empty(n)
     st = call(lib.el_fit_smooth if smooth else lib.el_fit_discrete, dptr(pts), n, o, init, res,
               dptr(dist), dptr(foot), keep=(pts, dist, foot, initial))     # Ctrl-C: the CLI's
-    # the points' noise figures, computed once where a test below asks them (the quick one the
-    # C fit's, figures=1), for the checks of the fit (its points are the result's, or its free
-    # fit's, a fit of the same points); res0's median |distance| for the outlier test
-    fig, res0 = _Figures(pts, res.noise_quick), res
     explain_input_status(st, pts)       # NaN / inf, an extent out of range: named (QA25 F5)
     if res.constraint and st in (lib.EL_EINVAL, lib.EL_EDOM):
         _raise_constraint(st, res.constraint, _conditions(constraints, fixed), constraints)
@@ -713,7 +713,7 @@ def _fit(points, model: str = "discrete", fixed: Optional[Mapping[str, float]] =
                          stacklevel=4)
     if check_misfit:
         r = _judged(r, judged_fit(r, constraints or fixed or bounds, distance), fig)
-        _warn_outliers(r, res.median_distance if res is res0 else math.nan)
+        _warn_outliers(r)
     if check_sparse and not smooth and n < SPARSE_POINTS:
         r = _sparse(r, constraints)
     return r

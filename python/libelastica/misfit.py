@@ -14,7 +14,6 @@ None
 """
 from __future__ import annotations
 
-import math
 import warnings
 from dataclasses import dataclass
 from typing import Optional, Tuple
@@ -139,12 +138,9 @@ class _Figures:
     without their repeats (:func:`_distinct`); ``level``: :func:`noise_level`'s."""
     __slots__ = ("pts", "_seen", "_quick", "_plain", "_level")
 
-    def __init__(self, pts: np.ndarray, quick: float = math.nan):
+    def __init__(self, pts: np.ndarray):
         self.pts = pts
-        self._seen = self._plain = self._level = None
-        # quick: el_fit_noise_quick's figure of pts where known (a fit's result, figures=1;
-        # NaN where it failed: computed here, its error said as before)
-        self._quick = None if math.isnan(quick) else quick
+        self._seen = self._quick = self._plain = self._level = None
 
     @property
     def seen(self) -> np.ndarray:
@@ -696,17 +692,9 @@ def _fit_outliers(r, free_distances=None):
     return (far, None) if stray is None else (np.array([stray[0]], dtype=np.intp), stray)
 
 
-def _warn_outliers(r, median: float = math.nan) -> None:
+def _warn_outliers(r) -> None:
     """:func:`fit`'s OutlierWarning of result ``r`` where :func:`fit_outliers` names points
-    (numbered in the caller's order: ``r.order``'s where fitted in curve order). median: the
-    median of ``np.abs(r.distances)`` where the C fit gave it (figures=1; NaN: not known) for
-    a result without constraints: far_points' first test from it and ``r.max_error`` (the C
-    fit's largest |distance|, checked there), with none far the answer, without its numpy calls
-    (cold, as between other work: 0.14 ms of a 1000-point el.fit's 1.4)."""
-    from .fit import OUTLIER_FACTOR, OUTLIER_MIN_POINTS
-    if (median == median and not r.constraints and len(r.distances) >= OUTLIER_MIN_POINTS
-            and not r.max_error > OUTLIER_FACTOR * (1.4826 * median)):
-        return
+    (numbered in the caller's order: ``r.order``'s where fitted in curve order)."""
     far, stray = _fit_outliers(r)
     if not len(far):
         return

@@ -348,8 +348,7 @@ def test_a_fit_computes_the_points_noise_figures_once(monkeypatch):
     ran; a check run on every fit once took el.fit from 3.1 to 2.24 x scipy's lm). A noisy
     uneven scan far from the origin (silent) and QA20's scan passed out and back (fitted in
     curve order, its figures asked by all three tests), both models, both distances; the
-    results as the figures say (no misfit; one OrderWarning). The quick figure is the C fit's
-    (el_fit_options.figures, its result's noise_quick): never computed here."""
+    results as the figures say (no misfit; one OrderWarning)."""
     from test_fit_retrace import SCANS, _scan
     misfit_module = importlib.import_module("libelastica.misfit")
     fit_module = importlib.import_module("libelastica.fit")
@@ -379,7 +378,7 @@ def test_a_fit_computes_the_points_noise_figures_once(monkeypatch):
                 r = el.fit(P, model=model, distance=None if distance == "orthogonal" else distance)
             counts = {k: calls.count(k) for k in ("quick", "plain", "distinct")}
             assert max(counts.values()) <= 1, (name, model, distance, counts)
-            assert counts["quick"] == 0 and r.misfit is None, (name, model, distance, counts)
+            assert counts["quick"] == 1 and r.misfit is None, (name, model, distance, counts)
             said = [x for x in w if issubclass(x.category, el.OrderWarning)]
             assert len(said) == (name == "out_and_back"), (name, model, distance, said)
 
