@@ -38,7 +38,8 @@ class FitProxy(FeatureProxy):
         add_link(obj, "App::PropertyLinkSubList", "Source", "Input",
                  "Sketch edges or vertices, a Points object, or a wire / 3D polyline to fit")
         add_property(obj, "App::PropertyFile", "CsvFile", "Input",
-                     "A CSV / text file of x,y[,z] points (mm), used instead of Source when set; "
+                     "A CSV / text file of x,y[,z] points (mm, or the unit its header names: "
+                     "x [m],y [m]), used instead of Source when set; "
                      "read again at a recompute once it changed on disk (its modification "
                      "time or size)")
         if "CsvStamp" not in obj.PropertiesList:     # hidden output: setting it touches nothing

@@ -80,6 +80,22 @@ THOUSANDS_HINT = "(the fit's Thousands property: '.', ',' or none)"
 _CLI_THOUSANDS = re.compile(r"\(command line: --thousands[^()]*(\([^()]*\)[^()]*)*\)")
 
 
+def file_unit_mm(unit):
+    """mm in one ``unit`` of a points file's header (io.read_points_unit's: 'm' for
+    'x [m],y [m]'), 1.0 for none (mm, as FreeCAD reads lengths); None for a unit that is no
+    length (px: a picture's, of no size). FreeCAD's units convert them (App.Units.Quantity);
+    'pt', which it does not know, is the typographic point, 1/72 in."""
+    if unit is None:
+        return 1.0
+    if unit == "pt":
+        return App.Units.Quantity("1 in").getValueAs("mm").Value / 72.0
+    try:
+        q = App.Units.Quantity(f"1 {unit}")
+    except (ValueError, RuntimeError):     # (0.20 raises ValueError: 'syntax error')
+        return None
+    return q.getValueAs("mm").Value if q.Unit == App.Units.Unit("mm") else None
+
+
 def gather_points(sources, csv_file="", samples_per_edge=60, link=None, element=None,
                   notes=None, thousands=None, names=None):
     """Points of a fit's input, in 3D, with what is known about them; ``link``: the
@@ -94,17 +110,26 @@ def gather_points(sources, csv_file="", samples_per_edge=60, link=None, element=
 
     Returns (points: list[App.Vector], plane: App.Placement or None (a sketch's),
     ordered: True (in curve order), False (none: curve_order's) or None (a file's order,
-    which may be no curve's: file_order), closed: bool)."""
+    which may be no curve's: file_order), closed: bool). A CSV file's points are read in
+    the unit its header names (``x [m],y [m]``: file_unit_mm), converted to mm; a unit that
+    is no length (px) reads as mm, said in ``notes``."""
     el()
     if csv_file:
         lines = []
         try:
-            arr = binding_module("io")._read_points_unit(csv_file, 1, None, thousands, lines)[0]
+            arr, unit = binding_module("io")._read_points_unit(csv_file, 1, None, thousands,
+                                                               lines)
         except ValueError as exc:
             # the library's way out names its own options (--thousands, read_points'
             # thousands=): here it is the fit's property
             raise InputProblem(_CLI_THOUSANDS.sub(THOUSANDS_HINT, str(exc))) from None
-        pts = [App.Vector(*(list(map(float, r)) + [0.0] * (3 - len(r)))) for r in arr]
+        mm = file_unit_mm(unit)
+        if mm is None:
+            mm = 1.0
+            if notes is not None:
+                notes.append(f"{os.path.basename(csv_file)}'s header names its coordinates in "
+                             f"{unit}, which is no length: read as mm")
+        pts = [App.Vector(*(list(map(float, r)) + [0.0] * (3 - len(r)))) * mm for r in arr]
         closed = ends_meet(pts)
         _named(names, [f"line {k} of {os.path.basename(csv_file)}" for k in lines])
         return pts, None, None, closed

@@ -132,8 +132,9 @@ class FitPanel(Panel):
         line = QtGui.QHBoxLayout(w)
         line.setContentsMargins(0, 0, 0, 0)
         self.csv = QtGui.QLineEdit(o.CsvFile)
-        self.csv.setToolTip("The CSV / text file of x,y[,z] points (mm) fitted; read again at "
-                            "a recompute once it changed on disk")
+        self.csv.setToolTip("The CSV / text file of x,y[,z] points fitted (mm, or the unit its "
+                            "header names: x [m],y [m]); read again at a recompute once it "
+                            "changed on disk")
         self.csv.setCursorPosition(len(o.CsvFile))     # the file's name in sight
         self.csv.editingFinished.connect(self.csv_typed)
         pick = QtGui.QPushButton("...")
