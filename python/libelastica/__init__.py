@@ -41,7 +41,7 @@ _LAZY = {name: module for module, names in {
                "g2_bspline", "quadratic_joint_curvatures", "EdgeCountError", "EndPieces",
                "affine_end_pieces"),
     "g2quad": ("CoverageError", "CoverageWarning", "EndTangentWarning", "G2Quadratic",
-               "covering_edges", "g2_quadratic"),
+               "StrayWarning", "covering_edges", "g2_quadratic"),
 }.items() for name in names}
 # the submodules `import libelastica` always gave as attributes
 _SUBMODULES = ("affine", "blend", "bspline", "core", "cubic", "fit_cost", "g2quad", "io", "keyline",

@@ -18,13 +18,13 @@ from ._values import ValueEquality
 from .affine import (AffinePolyline, EdgeCountError, EndPieces, _curve_samples, _is_curve,
                      affine_end_pieces, affine_polyline, elastica_inflections, g2_bspline, quadratic_joint_curvatures)
 from .g2dev import refined_deviation
-from .g2quad_points import (_built_locally, _end_curvatures, _local_source, _noisy_points_error,
-                            _repeated_points, _seam_duck)
+from .g2quad_points import (StrayWarning, _built_locally, _end_curvatures, _local_source,
+                            _noisy_points_error, _repeated_points, _seam_duck, _stray_warning)
 from .g2ends import (_end_curvature, _held_joints, _hold_joints, _matched_ends, _menger_max,
                      _rel_err, _seam_estimate, _joins, _seam_rounding, _tangent_alone)
 
-__all__ = ["G2Quadratic", "CoverageError", "CoverageWarning", "EndTangentWarning", "covering_edges",
-           "g2_quadratic"]
+__all__ = ["G2Quadratic", "CoverageError", "CoverageWarning", "EndTangentWarning", "StrayWarning",
+           "covering_edges", "g2_quadratic"]
 
 
 @dataclass(eq=False)
@@ -415,7 +415,9 @@ def g2_quadratic(curve_or_points, n: int, samples_per_vertex: int = 20, tangents
     :class:`CoverageError` when the splines would leave part of the source out (an end
     piece beyond an inflection too short for 3 edges), naming how much and the fewest
     edges that cover it (:func:`covering_edges`); ``partial=True`` returns that result
-    instead (``covers_source`` False, ``dropped``) with a :class:`CoverageWarning`.
+    instead (``covers_source`` False, ``dropped``) with a :class:`CoverageWarning`; point
+    data whose splines stray more than STRAY_EDGE x length / n from them (their noise built
+    on, not their curve) warn a :class:`StrayWarning` naming the piece and fit=True.
     The ends' curvature is the source's (end_curvature_error ~1e-12): the uniform end
     parabola from the exact end point ends with ~0.71 x it at every n (the polyline's
     vertices lie on the source, the spline runs inside it by ~kappa h^2/8, and the parabola
@@ -767,6 +769,9 @@ def g2_quadratic(curve_or_points, n: int, samples_per_vertex: int = 20, tangents
                          f"source's: {why}" for end, err, why in missed)
         _say(_said, _plain, EndTangentWarning(f"g2_quadratic ({n} edges): {said}",
                                               tuple((end, err) for end, err, _ in missed)))
+    if not is_curve and (stray := _stray_warning(   # the points' noise built on, not their curve
+            samples, n, length, dev, [b[2] for b in built], ap.piece_start, t_ends)):
+        _say(_said, _plain, stray)
     if not all(covers):
         what = _left_out(dropped, length, n, inflection, short)
         if partial:

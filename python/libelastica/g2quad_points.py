@@ -26,6 +26,49 @@ def _sign_changes(points: np.ndarray) -> int:
     return int(np.count_nonzero(a[1:] != a[:-1]))
 
 
+# the splines of point data straying more than STRAY_EDGE x the mean edge (length / n) from
+# the points: the affine polyline built on their noise, not their curve (review revC: a 360 mm
+# hand stroke, 40 points, 0.3 mm noise, 24 edges: 74-102 mm, 5-7 mean edges, one end parabola's
+# knot interval 20-25 where sqrt(2) is usual). Clean sources stay below 0.063 (the 560 builds of
+# /tmp/g2qinfl's sweep, curves and samples, 12-96 edges), sane noisy strokes below 0.33.
+STRAY_EDGE = 0.5
+
+
+class StrayWarning(RuntimeWarning):
+    """:func:`g2_quadratic`'s warning that its splines stray from the source points by more
+    than STRAY_EDGE x the mean edge (their length / n): the points are too noisy for the
+    affine arc length, whose vertices crowd where the noise bends the points and leave long
+    edges between. ``piece``: the piece (0-based) that strays farthest, ``deviation``: its
+    distance from the points, ``edge``: the mean edge (length / n)."""
+
+    def __init__(self, message: str = "", piece: int = 0, deviation: float = 0.0,
+                 edge: float = 0.0):
+        super().__init__(message)
+        self.piece, self.deviation, self.edge = int(piece), float(deviation), float(edge)
+
+
+def _stray_warning(points: np.ndarray, n: int, length: float, deviation: float,
+                   piece_devs, piece_start, t_ends) -> Optional[StrayWarning]:
+    """g2_quadratic's StrayWarning for point data whose splines stray more than
+    STRAY_EDGE x length / n from them (``deviation``: the stated one, ``piece_devs`` each
+    piece's, its vertices ``piece_start``, its ends ``t_ends`` (sample indices)), else None."""
+    edge = length / n
+    if not deviation > STRAY_EDGE * edge:
+        return None
+    p = int(np.argmax(piece_devs))
+    npieces = len(piece_devs)
+    return StrayWarning(
+        f"g2_quadratic ({n} edges): the splines stray {deviation:.3g} from the points, "
+        f"{deviation / edge:.3g} x the mean edge {edge:.3g} (length / n); piece {p} of {npieces} "
+        f"(points {int(round(float(t_ends[p])))} to {int(round(float(t_ends[p + 1])))}, "
+        f"{int(piece_start[p + 1] - piece_start[p])} edges) strays {piece_devs[p]:.3g} from its "
+        f"own points: its affine polyline follows the points' noise (their discrete curvature "
+        f"changes sign {_sign_changes(points)} times over {len(points)} points), not their curve. Fit the "
+        "points first: fit=True (`elastica g2quad FILE --fit`) or el.fit(points, "
+        "model='smooth') and build from its curve; more edges do not help noisy points",
+        p, piece_devs[p], edge)
+
+
 # More sign changes of the points' discrete curvature than a piecewise-convex profile's few
 # inflections: noise (_sign_changes), named as such in g2_quadratic's DomainError.
 NOISY_SIGN_CHANGES = 3

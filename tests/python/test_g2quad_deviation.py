@@ -2,6 +2,8 @@
 figure below it (QA qapy F4: 0.055093 stated, 0.055300 measured on its own DXF, 0.38 % more)."""
 from __future__ import annotations
 
+import warnings
+
 import numpy as np
 import pytest
 
@@ -71,3 +73,41 @@ def test_nearest_sample_by_matrix_product_is_the_nearest(offset, scale):
     got = np.linalg.norm(P[nearest_samples(q, P)] - q, axis=1)
     want = np.sqrt(((P[None, :, :] - q[:, None, :]) ** 2).sum(axis=2)).min(axis=1)
     assert np.all(got <= want + 1e-9 * scale + 1e-15 * abs(offset))
+
+
+def _hand_strokes():
+    """Review revC's raw strokes: a sine S of 25 / 40 uneven points, ~150-400 mm, 0.1 / 0.3 mm
+    of noise (the first two of /tmp/revC/run1.py's, at its offsets)."""
+    rng = np.random.default_rng(3)
+    for i in range(2):
+        m = (25, 40)[i]
+        t = np.sort(rng.uniform(0, 1, m))
+        t[0], t[-1] = 0, 1
+        L, amp = rng.uniform(150, 400), rng.uniform(20, 60)
+        pts = np.c_[L * t, amp * np.sin(2 * np.pi * (t - 0.5) * rng.uniform(0.8, 1.0))]
+        pts += rng.normal(0, (0.1, 0.3)[i], pts.shape)
+        yield pts + ((0, 0), (1500, -800))[i]
+
+
+@pytest.mark.parametrize("offset", [(0.0, 0.0), (5e5, 5e6)])
+def test_splines_built_on_noise_warn_and_name_the_piece(offset):
+    """A noisy hand stroke (40 points, 0.3 mm noise, ~345 mm) at 24 edges: the affine
+    polyline's vertices crowd where the noise bends the points, and the splines strayed 74 mm
+    from the points (an end parabola's knot interval 20.5 where sqrt(2) is usual), silently.
+    Now a StrayWarning names the piece and the way out (fit=True), whose result is sane; a
+    stroke whose noise leaves the splines near it (the 25-point one) does not warn."""
+    clean, noisy = _hand_strokes()
+    noisy = noisy + offset
+    edge = np.linalg.norm(np.diff(noisy, axis=0), axis=1).sum() / 24
+    said_piece = r"piece \d of 2 \(points \d+ to \d+, \d+ edges\) strays .*fit=True"
+    with pytest.warns(el.StrayWarning, match=said_piece) as said:
+        g = el.g2_quadratic(noisy, 24)
+    w = [x.message for x in said if isinstance(x.message, el.StrayWarning)][0]
+    assert g.deviation > 2 * edge
+    assert w.piece in (0, 1) and w.edge == pytest.approx(edge) and w.deviation > g.deviation
+    with warnings.catch_warnings():
+        warnings.simplefilter("error", el.StrayWarning)
+        fitted = el.g2_quadratic(noisy, 24, fit=True)
+        assert fitted.deviation < 0.02 * edge
+        ok = el.g2_quadratic(clean, 24)
+        assert ok.deviation < 0.1 * np.linalg.norm(np.diff(clean, axis=0), axis=1).sum() / 24

@@ -13,7 +13,7 @@ import libelastica as el
 LAZY = ("keyline", "resampled", "blend", "spline", "affine", "g2quad")
 # every public name of `import libelastica` before (121, and SparseWarning, spline's UnstableWarning, g2quad's CoverageError,
 # covering_edges, EndTangentWarning, affine's EdgeCountError, spline's holding_tension, misfit's OutlierWarning,
-# fit_outliers and outliers_summary, affine's EndPieces and affine_end_pieces, misfit's split_hint, fit_uncertainty since: classes, functions, constants, the submodules it gave as attributes)
+# fit_outliers and outliers_summary, affine's EndPieces and affine_end_pieces, misfit's split_hint, fit_uncertainty since, g2quad's StrayWarning: classes, functions, constants, the submodules it gave as attributes)
 PUBLIC = sorted("""AffinePolyline AngleUnitWarning BSpline BlendCurve BlendLoopWarning COST_FLOOR COST_RATIO
 ConditionWarning ConstraintError ConvergenceWarning CoverageError CoverageWarning DiscreteElastica DomainError
 DoublesBackError END_POINTS END_SPAN EdgeCountError ElasticSpline ElasticaError EllipticBlend EndConditionWarning
@@ -21,7 +21,7 @@ EndPieces EndTangentWarning FitResult Frame Frame2D G2Quadratic HERMITE_SIGMA_D2
 HermiteSolutions KEYLINE_STEPS KeylineFit LengthRangeError LoopWarning MISFIT_RATIO MQBlend Misfit MisfitWarning
 NotConvergedError ORDER_RATIO OrderWarning Ordering OutlierWarning OsculatingConics RESAMPLE_MAX_VERTICES
 RESAMPLE_RATIO ResampleWarning ResampledFit SPARSE_POINTS SPREAD_MAX SeamWarning SingularError SmoothElastica
-SparseWarning UnstableWarning WanderWarning ZIGZAG affine
+SparseWarning StrayWarning UnstableWarning WanderWarning ZIGZAG affine
 affine_coords affine_curvature affine_curvature_exact affine_elements affine_end_pieces
 affine_length affine_polyline blend blend_curve bspline chaikin core cost_summary costly cubic
 covering_edges cubic_distances cubic_through curve_order eck_d eck_omega elastic_spline elastica_affine_curvature
@@ -47,7 +47,7 @@ def test_help_does_not_load_what_it_does_not_use():
 
 
 def test_public_api_unchanged():
-    assert len(PUBLIC) == 139       # in a fresh process: a submodule imported adds its name
+    assert len(PUBLIC) == 140       # in a fresh process: a submodule imported adds its name
     assert _run("import libelastica as el\n"
                 "print(' '.join(sorted(n for n in dir(el) if not n.startswith('_'))))").split() == PUBLIC
     names = _run("from libelastica import *\n"
