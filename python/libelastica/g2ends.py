@@ -518,11 +518,13 @@ def _hold_joints(built: list, joints: dict, ends: np.ndarray, factor: float,
     """g2_quadratic's pieces ``built`` [(x, spline, deviation, ...)] with the ends of each
     joint j in ``joints`` (_held_joints: piece j-1's end, piece j's start) moved to hold the
     source's tangent there, both or neither: kept where neither piece's ``deviation(p,
-    spline)`` exceeds ``factor`` x the largest of all pieces before (the splines' stated
-    deviation not growing; a short piece beside the inflection can stray farther locally,
-    a 0.235 mm piece of 15 edges to 0.376 mm beside one of 0.269, and then stays as it was).
-    In place; joints from left to right, so a piece between two carries both moves."""
-    limit = factor * max(b[2] for b in built)
+    spline)`` exceeds ``factor`` x its own before (a short piece beside the inflection can
+    stray farther locally, a 0.235 mm piece of 15 edges to 0.376 mm beside one of 0.269, and
+    then stays as it was). Its own, not the largest of all pieces: beside a bad piece a good
+    one grew 6 x (review revC: a noisy stroke at 24 edges, 33.8 -> 209 mm from its samples
+    beside one of 280, which held fell to 82.6). In place; joints from left to right, so a
+    piece between two carries both moves, each against the piece as built."""
+    limit = [factor * b[2] for b in built]
     for j in sorted(joints):
         new = []
         for p, lo, hi in ((j - 1, -3, -1), (j, 1, 3)):
@@ -533,6 +535,6 @@ def _hold_joints(built: list, joints: dict, ends: np.ndarray, factor: float,
             except DomainError:
                 break
             new.append((x, bs, deviation(p, bs)))
-        if len(new) == 2 and max(d for _, _, d in new) <= limit:
+        if len(new) == 2 and all(d <= limit[p] for p, (_, _, d) in zip((j - 1, j), new)):
             for p, (x, bs, d) in zip((j - 1, j), new):
                 built[p] = (x, bs, d) + tuple(built[p][3:])

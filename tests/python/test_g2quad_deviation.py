@@ -111,3 +111,30 @@ def test_splines_built_on_noise_warn_and_name_the_piece(offset):
         assert fitted.deviation < 0.02 * edge
         ok = el.g2_quadratic(clean, 24)
         assert ok.deviation < 0.1 * np.linalg.norm(np.diff(clean, axis=0), axis=1).sum() / 24
+
+
+def test_a_held_joint_takes_no_piece_farther_than_its_own(monkeypatch):
+    """The joint hold (both pieces' ends at an inflection on the source's tangent) is kept
+    only where neither piece strays farther than it did: each against its own, not against
+    the largest of all pieces (review revC: beside a piece 101 mm off, the noisy stroke's
+    other piece grew 28 x, 2.59 -> 74.3 mm from the points, and the hold was kept)."""
+    from libelastica import g2ends
+    from libelastica.report import closest_points
+    _, noisy = _hand_strokes()
+
+    def piece_devs():
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore", el.StrayWarning)
+            g = el.g2_quadratic(noisy, 24)
+        out = []
+        for b in g.bsplines:
+            K = np.asarray(b.knots)
+            xy = b(np.linspace(K[0], K[-1], 4000))
+            out.append(float(np.max(np.linalg.norm(closest_points(xy, noisy) - xy, axis=1))))
+        return out
+
+    held = piece_devs()
+    monkeypatch.setattr(g2ends, "JOINT_HOLD_EDGES", 10 ** 9)    # the plain build
+    plain = piece_devs()
+    assert len(held) == len(plain) == 2
+    assert all(h <= p * (1.0 + 1e-6) for h, p in zip(held, plain))
