@@ -16,6 +16,7 @@ import Part
 
 import elastica_samples as S
 from freecad.elastica import fit as Fi
+from freecad.elastica import fit_core
 from freecad.elastica import sources as So
 from freecad.elastica.units import say
 
@@ -105,6 +106,15 @@ class FitSketcherNamesTest(S.DocTest):
         counted = Counted()
         self.assertEqual(So.point_names(counted), [f"Mixed's {i + 1}-Point" for i in at])
         self.assertEqual(counted.reads, 1)
+
+    def test_a_label_holding_an_apostrophe_is_said_once(self):
+        """Several points of one object share its label, said once, also where the label
+        holds "'s " (review of e6f2667: "Bob's sketch's 11-Point, sketch's 26-Point")."""
+        said, short = fit_core._listed(["Bob's sketch's 11-Point", "Bob's sketch's 26-Point"])
+        self.assertEqual(said, "Bob's sketch's 11-Point, 26-Point")
+        self.assertEqual(short("Bob's sketch's 26-Point"), "26-Point")
+        said, _ = fit_core._listed(["Bob's wire's Vertex2", "Bob's part's Vertex5"])
+        self.assertEqual(said, "Bob's wire's Vertex2, Bob's part's Vertex5")
 
     def test_picked_vertices_are_named_as_picked(self):
         """Vertices picked one by one: a wire's by its vertex name, a sketch's polyline's

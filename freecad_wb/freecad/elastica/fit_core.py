@@ -330,7 +330,7 @@ def _listed(said):
     """(the names ``said`` listed, a function shortening one of them as listed): a label they
     share said once ("Scan's 11-Point, 26-Point"), a file's lines as one ("lines 11, 26 of
     points.csv"); else each in full."""
-    heads = {w.split("'s ", 1)[0] for w in said if "'s " in w}
+    heads = {w.rsplit("'s ", 1)[0] for w in said if "'s " in w}
     if len(heads) == 1 and all("'s " in w for w in said):
         head = heads.pop() + "'s "
         return head + ", ".join(w[len(head):] for w in said), lambda w: w[len(head):]
