@@ -157,6 +157,21 @@ class FitSketcherNamesTest(S.DocTest):
                 self.doc.recompute()
                 self.assertIn("(line 18 of scan.csv, at (", self._stray_said(f, model))
 
+    def test_a_npy_files_point_is_named_by_its_row(self):
+        """A .npy array has rows, no lines (review of e6f2667: 'line 12 of scan.npy'); several
+        listed as a file's lines are ("rows 3, 12 of scan.npy")."""
+        pts = _hand_sketch()
+        with tempfile.TemporaryDirectory() as tmp:
+            path = os.path.join(tmp, "scan.npy")
+            np.save(path, pts)
+            for model in ("discrete", "smooth"):
+                f = Fi.make(self.doc, csv_file=path, Model=model)
+                self.doc.recompute()
+                self.assertIn("(row 12 of scan.npy, at (", self._stray_said(f, model))
+        said, short = fit_core._listed(["row 3 of scan.npy", "row 12 of scan.npy"])
+        self.assertEqual(said, "rows 3, 12 of scan.npy")
+        self.assertEqual(short("row 12 of scan.npy"), "row 12")
+
 
 if __name__ == "__main__":
     unittest.main()

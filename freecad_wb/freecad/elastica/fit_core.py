@@ -334,11 +334,12 @@ def _listed(said):
     if len(heads) == 1 and all("'s " in w for w in said):
         head = heads.pop() + "'s "
         return head + ", ".join(w[len(head):] for w in said), lambda w: w[len(head):]
-    tails = {w.split(" of ", 1)[1] for w in said if w.startswith("line ") and " of " in w}
-    if len(tails) == 1 and all(w.startswith("line ") and " of " in w for w in said):
-        tail = " of " + tails.pop()
-        return ("lines " + ", ".join(w[5:-len(tail)] for w in said) + tail,
-                lambda w: w[:-len(tail)])
+    for row in ("line ", "row "):           # (a .npy array's rows)
+        tails = {w.split(" of ", 1)[1] for w in said if w.startswith(row) and " of " in w}
+        if len(tails) == 1 and all(w.startswith(row) and " of " in w for w in said):
+            tail = " of " + tails.pop()
+            return (f"{row[:-1]}s " + ", ".join(w[len(row):-len(tail)] for w in said) + tail,
+                    lambda w: w[:-len(tail)])
     return ", ".join(said), lambda w: w
 
 

@@ -131,7 +131,9 @@ def gather_points(sources, csv_file="", samples_per_edge=60, link=None, element=
                              f"{unit}, which is no length: read as mm")
         pts = [App.Vector(*(list(map(float, r)) + [0.0] * (3 - len(r)))) * mm for r in arr]
         closed = ends_meet(pts)
-        _named(names, [f"line {k} of {os.path.basename(csv_file)}" for k in lines])
+        # (a .npy array has rows, no lines)
+        row = "row" if csv_file.lower().endswith(".npy") else "line"
+        _named(names, [f"{row} {k} of {os.path.basename(csv_file)}" for k in lines])
         return pts, None, None, closed
     if not sources:
         raise nothing_read("sketch edges or vertices, a Points object, a wire, or give a CSV "
