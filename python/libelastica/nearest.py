@@ -146,13 +146,16 @@ def curve_feet(curve, data, samples=None):
     who, at_j = [], []
     for a in range(0, len(data), 1024):          # bounded (1024, k) tables
         q = data[a:a + 1024] - o
-        d = n.sqrt(n.maximum(n2[None, :] - 2.0 * (q @ sm.T) + n.einsum("ij,ij->i", q, q)[:, None],
-                             0.0))
-        pad = n.pad(d, ((0, 0), (1, 1)), constant_values=n.inf)
-        dip = (d <= pad[:, :-2]) & (d <= pad[:, 2:]) & (d <= d.min(axis=1)[:, None] + step)
-        r, j = n.nonzero(dip)
-        who.append(r + a)
-        at_j.append(j)
+        d2 = n.maximum(n2[None, :] - 2.0 * (q @ sm.T) + n.einsum("ij,ij->i", q, q)[:, None], 0.0)
+        # the samples within a step of the nearest (squared: no square root of the table),
+        # then of those the dips, compared with their neighbours (few: no padded copies)
+        near = n.sqrt(d2.min(axis=1)) + step
+        r, j = n.nonzero(d2 <= (near * near)[:, None])
+        here = d2[r, j]
+        dip = ((j == 0) | (here <= d2[r, n.maximum(j - 1, 0)])) & \
+            ((j == k - 1) | (here <= d2[r, n.minimum(j + 1, k - 1)]))
+        who.append(r[dip] + a)
+        at_j.append(j[dip])
     p, j = n.concatenate(who), n.concatenate(at_j)
     s, _, d2 = refine_feet(curve_at(curve), data[p], j * step, n.maximum(j - 1, 0) * step,
                            n.minimum(j + 1, k - 1) * step)
