@@ -219,6 +219,23 @@ def arc_sketch(doc, radius=20.0, name="Arc", placement=SKETCH_PLACEMENT):
     return sk
 
 
+def inclined_body_sketch(doc, name):
+    """An empty sketch on a datum plane inclined 35 deg in a Body placed at (200, 100, 50) and
+    turned 15 deg (QA e6: a designer's Body sketch, neither the XY plane nor the origin)."""
+    body = doc.addObject("PartDesign::Body", "Body")
+    body.Placement = App.Placement(App.Vector(200, 100, 50), App.Rotation(App.Vector(0, 0, 1), 15))
+    plane = body.newObject("PartDesign::Plane", "Inclined")
+    plane.Support = [(body.Origin.OriginFeatures[3], "")]
+    plane.MapMode = "FlatFace"
+    plane.AttachmentOffset = App.Placement(App.Vector(0, 0, 30),
+                                           App.Rotation(App.Vector(1, 0, 0), 35))
+    doc.recompute()
+    sk = body.newObject("Sketcher::SketchObject", name)
+    sk.Support = [(plane, "")]
+    sk.MapMode = "FlatFace"
+    return sk
+
+
 def circle_sketch(doc, radius=20.0, name="Circle"):
     """A sketch with one full circle (a closed curve)."""
     sk = doc.addObject("Sketcher::SketchObject", name)

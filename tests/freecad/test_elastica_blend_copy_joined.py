@@ -108,17 +108,7 @@ class CopyJoinedTest(S.DocTest):
 
     def test_inclined_body_plane(self):
         """QA e6: a Body placed and turned, a datum plane inclined 35 deg, the sketch on it."""
-        body = self.doc.addObject("PartDesign::Body", "Body")
-        body.Placement = App.Placement(App.Vector(200, 100, 50), App.Rotation(App.Vector(0, 0, 1), 15))
-        plane = body.newObject("PartDesign::Plane", "Inclined")
-        plane.Support = [(body.Origin.OriginFeatures[3], "")]
-        plane.MapMode = "FlatFace"
-        plane.AttachmentOffset = App.Placement(App.Vector(0, 0, 30),
-                                               App.Rotation(App.Vector(1, 0, 0), 35))
-        self.doc.recompute()
-        sk = body.newObject("Sketcher::SketchObject", "Profile")
-        sk.Support = [(plane, "")]
-        sk.MapMode = "FlatFace"
+        sk = S.inclined_body_sketch(self.doc, "Profile")
         _line_arc(sk)
         self.doc.recompute()
         for continuity in ("G2", "G1"):

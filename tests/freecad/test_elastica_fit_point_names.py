@@ -25,18 +25,7 @@ class FitPointNamesTest(S.DocTest):
     doc_name = "ElasticaFitPointNames"
 
     def _inclined_sketch(self, xy):
-        body = self.doc.addObject("PartDesign::Body", "Body")
-        body.Placement = App.Placement(App.Vector(200, 100, 50),
-                                       App.Rotation(App.Vector(0, 0, 1), 15))
-        plane = body.newObject("PartDesign::Plane", "Inclined")
-        plane.Support = [(body.Origin.OriginFeatures[3], "")]
-        plane.MapMode = "FlatFace"
-        plane.AttachmentOffset = App.Placement(App.Vector(0, 0, 30),
-                                               App.Rotation(App.Vector(1, 0, 0), 35))
-        self.doc.recompute()
-        sk = body.newObject("Sketcher::SketchObject", "Scan")
-        sk.Support = [(plane, "")]
-        sk.MapMode = "FlatFace"
+        sk = S.inclined_body_sketch(self.doc, "Scan")
         for x, y in xy:
             sk.addGeometry(Part.Point(App.Vector(x, y, 0)), False)
         self.doc.recompute()
