@@ -27,7 +27,7 @@ GUI_ENV    = $(call fc-env,$(GUIHOME))
 # a hang guard, not a timing test: test_elastica_fit takes ~92 s alone and 130-160 s at load 13-15
 # on 2 cores (fcnums, 21:27): 150 s failed it under load; 400 s still stops a hang
 TIMEOUT   ?= 400
-# the GUI smoke drives every panel (364 checks; its waits poll, gui_smoke.wait): ~3 min at load 12 on 2 cores
+# the GUI smoke drives every panel (467 checks at 4b4c3af; its waits poll, gui_smoke.wait): ~3 min at load 12 on 2 cores
 GUI_TIMEOUT ?= 450
 
 .PHONY: all fc-home fc-gui-home fc-tests fc-gui fc-demo fc-gallery fc-addon
