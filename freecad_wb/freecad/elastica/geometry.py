@@ -60,11 +60,18 @@ def is_sketch(obj):
 
 
 def dedup(vecs, tol=1e-9):
-    """The vectors without consecutive repeats."""
+    """The vectors without consecutive repeats (kept_indices')."""
+    vecs = list(vecs)
+    return [vecs[k] for k in kept_indices(vecs, tol)]
+
+
+def kept_indices(vecs, tol=1e-9):
+    """The indices of the vectors dedup keeps (consecutive repeats merged into the first):
+    what names them follows them (sources.gather_points' names)."""
     out = []
-    for v in vecs:
-        if not out or (v - out[-1]).Length > tol:
-            out.append(v)
+    for k, v in enumerate(vecs):
+        if not out or (v - vecs[out[-1]]).Length > tol:
+            out.append(k)
     return out
 
 

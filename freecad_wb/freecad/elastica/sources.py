@@ -18,7 +18,7 @@ import FreeCAD as App
 import Part
 
 from .geometry import (binding_module, dedup, el, ends_meet, global_element, global_points,
-                       global_shape, is_sketch, np)
+                       global_shape, is_sketch, kept_indices, np)
 from .proxy import InputProblem
 from .units import exact_mark
 
@@ -163,8 +163,9 @@ def gather_points(sources, csv_file="", samples_per_edge=60, link=None, element=
                     notes.append(_edges_left_out(obj.Label, len(pts), n_edges))
                 continue
         if obj.isDerivedFrom("Points::Feature"):
-            points.extend(global_points(obj))
-            said.extend(f"{obj.Label}'s point {k + 1}" for k in range(len(obj.Points.Points)))
+            mine = global_points(obj)       # (each read of Points.Points copies them all)
+            points.extend(mine)
+            said.extend(f"{obj.Label}'s point {k + 1}" for k in range(len(mine)))
             continue
         shape = global_shape(obj)
         if shape.isNull():
@@ -194,19 +195,9 @@ def gather_points(sources, csv_file="", samples_per_edge=60, link=None, element=
         _few_line_points(sources, edges, pts, closed)
         return pts, plane, True, closed
     pts = vertices or points
-    kept = _kept(pts)
+    kept = kept_indices(pts)
     _named(names, [said[k] for k in kept] if len(said) == len(pts) else [])
     return [pts[k] for k in kept], plane, False, False
-
-
-def _kept(pts, tol=1e-9):
-    """The indices of the points geometry.dedup keeps (consecutive repeats merged into the
-    first): the names of the points kept."""
-    out = []
-    for k, v in enumerate(pts):
-        if not out or (v - pts[out[-1]]).Length > tol:
-            out.append(k)
-    return out
 
 
 def _named(names, said):
