@@ -56,9 +56,7 @@ def number_text(x, at_least=None, bound=None):
         (ceil_digits if bound == "up" else floor_digits)(x, keep)
     lead = math.floor(math.log10(abs(shown_x)))
     if lead < -6:
-        if bound:
-            x = (ceil_digits if bound == "up" else floor_digits)(x, keep)
-        return f"{x:.{max(0, keep - 1)}e}"
+        return f"{shown_x if bound else x:.{max(0, keep - 1)}e}"
     places = max(d, keep - 1 - lead)
     text = (f"{x:.{places}f}" if not bound else
             format(Decimal(repr(x)).quantize(Decimal(1).scaleb(-places),
