@@ -60,14 +60,12 @@ def is_sketch(obj):
 
 
 def dedup(vecs, tol=1e-9):
-    """The vectors without consecutive repeats (kept_indices')."""
-    vecs = list(vecs)
+    """The list ``vecs`` without consecutive repeats (the vectors kept_indices names)."""
     return [vecs[k] for k in kept_indices(vecs, tol)]
 
 
 def kept_indices(vecs, tol=1e-9):
-    """The indices of the vectors dedup keeps (consecutive repeats merged into the first):
-    what names them follows them (sources.gather_points' names)."""
+    """Indices of the vectors dedup keeps (a repeat merged into the first; sources' names)."""
     out = []
     for k, v in enumerate(vecs):
         if not out or (v - vecs[out[-1]]).Length > tol:
@@ -431,8 +429,7 @@ def join_ends(sketch, ids, ends):
     copy's end dimensioned, or the edge's). Returns the constraints added (their indices)."""
     import Sketcher
     original, geometry = sketch.Geometry, sketch.Geometry
-    start = (ids[0], 1)
-    end = (ids[-1], 2)
+    start, end = (ids[0], 1), (ids[-1], 2)
     before = [_probe(g) for g in geometry]
     size = max([1.0] + [abs(v) for pts in before for p in pts for v in (p.x, p.y)])
     joints, snapped = [], False
@@ -477,9 +474,7 @@ def join_ends(sketch, ids, ends):
         return added
     # one joint the sketch refuses does not take the other with it (review of F4): each
     # tried alone, the good one kept
-    for k in reversed(range(n0, len(sketch.Constraints))):
-        sketch.delConstraint(k)
-    sketch.Geometry = snapped_geometry
+    _take_back(sketch, n0, snapped_geometry)
     added, refused = [], []
     for j in joints:
         n = len(sketch.Constraints)
@@ -489,9 +484,7 @@ def join_ends(sketch, ids, ends):
             added.append(c)
             snapped_geometry = sketch.Geometry
             continue
-        for k in reversed(range(n, len(sketch.Constraints))):
-            sketch.delConstraint(k)
-        sketch.Geometry = snapped_geometry
+        _take_back(sketch, n, snapped_geometry)
         refused.append(f"the copy's {'start' if j[3] == 1 else 'end'} is not joined to Edge"
                        f"{j[0] + 1}'s end by a Tangent constraint: the sketch {why}"
                        + (f" ({_held(sketch, j, n0)})" if why.startswith("would not") else ""))
@@ -500,6 +493,13 @@ def join_ends(sketch, ids, ends):
     App.Console.PrintWarning(f"Elastica: {sketch.Label}: " + "; ".join(refused) + (
         "; its other end is joined" if added else "") + "\n")
     return added
+
+
+def _take_back(sketch, n, geometry):
+    """Delete the constraints from index ``n`` on, put ``geometry`` back (join_ends)."""
+    for k in reversed(range(n, len(sketch.Constraints))):
+        sketch.delConstraint(k)
+    sketch.Geometry = geometry
 
 
 def _held(sketch, joint, n0):
