@@ -219,6 +219,15 @@ def arc_sketch(doc, radius=20.0, name="Arc", placement=SKETCH_PLACEMENT):
     return sk
 
 
+def f4_line_arc(sk, y=-800.0):
+    """QA gui F4's profile drawn into ``sk``: a line (1500, y)-(1620, y) and an arc r 60
+    centred (1830, y + 90), 200 deg .. 330 deg (a blend joins the line's end to the arc's
+    start): test_elastica_blend_copy_joined's, _blend_g2_default's, _comb_together's."""
+    sk.addGeometry(Part.LineSegment(App.Vector(1500, y, 0), App.Vector(1620, y, 0)), False)
+    c = Part.Circle(App.Vector(1830, y + 90, 0), App.Vector(0, 0, 1), 60)
+    sk.addGeometry(Part.ArcOfCircle(c, math.radians(200), math.radians(330)), False)
+
+
 def inclined_body_sketch(doc, name):
     """An empty sketch on a datum plane inclined 35 deg in a Body placed at (200, 100, 50) and
     turned 15 deg (QA e6: a designer's Body sketch, neither the XY plane nor the origin)."""

@@ -13,14 +13,6 @@ import elastica_samples as S
 from freecad.elastica import blend as Bl
 
 
-def _line_arc(sk, y=-800.0):
-    """F4's profile: a line (1500, y)-(1620, y) and an arc r 60 centred (1830, y + 90),
-    200 deg .. 330 deg (the blend joins the line's end to the arc's start)."""
-    sk.addGeometry(Part.LineSegment(App.Vector(1500, y, 0), App.Vector(1620, y, 0)), False)
-    c = Part.Circle(App.Vector(1830, y + 90, 0), App.Vector(0, 0, 1), 60)
-    sk.addGeometry(Part.ArcOfCircle(c, math.radians(200), math.radians(330)), False)
-
-
 def _bspline(sk, pts):
     b = Part.BSplineCurve()
     b.interpolate([App.Vector(x, y, 0) for x, y in pts])
@@ -100,7 +92,7 @@ class CopyJoinedTest(S.DocTest):
     def test_line_and_arc_g1_and_g2(self):
         for continuity in ("G1", "G2"):
             doc_sk = self.doc.addObject("Sketcher::SketchObject", "Profile" + continuity)
-            _line_arc(doc_sk)
+            S.f4_line_arc(doc_sk)
             self.doc.recompute()
             b, gi, _ = self._copied(doc_sk, continuity)
             # the line's start dragged: its end joined to the copy stays on the copy
@@ -109,7 +101,7 @@ class CopyJoinedTest(S.DocTest):
     def test_inclined_body_plane(self):
         """QA e6: a Body placed and turned, a datum plane inclined 35 deg, the sketch on it."""
         sk = S.inclined_body_sketch(self.doc, "Profile")
-        _line_arc(sk)
+        S.f4_line_arc(sk)
         self.doc.recompute()
         for continuity in ("G2", "G1"):
             b, gi, _ = self._copied(sk, continuity)
@@ -176,7 +168,7 @@ class CopyJoinedTest(S.DocTest):
     def test_a_copy_into_another_sketch_is_not_joined(self):
         """Copy into a sketch that does not hold the edges: nothing to join."""
         sk = self.doc.addObject("Sketcher::SketchObject", "Profile")
-        _line_arc(sk)
+        S.f4_line_arc(sk)
         other = self.doc.addObject("Sketcher::SketchObject", "Other")
         self.doc.recompute()
         b = Bl.make(self.doc, (sk, "Edge1"), (sk, "Edge2"))
@@ -191,7 +183,7 @@ class CopyJoinedTest(S.DocTest):
         dimensioned by the designer (DistanceX, DistanceY): a joint there is redundant, the
         one at the copy's end is not."""
         sk = self.doc.addObject("Sketcher::SketchObject", name)
-        _line_arc(sk)
+        S.f4_line_arc(sk)
         for c in (Sketcher.Constraint("DistanceX", -1, 1, 0, 1, 1500),
                   Sketcher.Constraint("DistanceY", -1, 1, 0, 1, -800),
                   Sketcher.Constraint("DistanceX", -1, 1, 0, 2, 1620),

@@ -27,9 +27,7 @@ class BlendG2DefaultTest(S.DocTest):
 
     def line_arc(self):
         sk = self.doc.addObject("Sketcher::SketchObject", "Profile")
-        sk.addGeometry(Part.LineSegment(App.Vector(1500, -800, 0), App.Vector(1620, -800, 0)), False)
-        c = Part.Circle(App.Vector(1830, -710, 0), App.Vector(0, 0, 1), 60)
-        sk.addGeometry(Part.ArcOfCircle(c, math.radians(200), math.radians(330)), False)
+        S.f4_line_arc(sk)
         self.doc.recompute()
         return sk
 

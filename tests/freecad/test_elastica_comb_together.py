@@ -2,7 +2,6 @@
 blend and the two sketch edges it joins, selected together, are ONE comb on one scale, so
 equal curvature gives equal teeth across each joint (they were two combs, scales 946 and
 1670, the teeth 1.76 x apart where they met); one source's comb is as before."""
-import math
 
 import FreeCAD as App
 import Part
@@ -31,9 +30,7 @@ class CombTogetherTest(S.DocTest):
         super().setUp()
         sk = self.sk = self.doc.addObject("Sketcher::SketchObject", "Profile")
         sk.Placement = App.Placement(App.Vector(0, 0, 10), App.Rotation(App.Vector(1, 1, 0), 25))
-        sk.addGeometry(Part.LineSegment(App.Vector(1500, -800, 0), App.Vector(1620, -800, 0)), False)
-        c = Part.Circle(App.Vector(1830, -710, 0), App.Vector(0, 0, 1), 60)
-        sk.addGeometry(Part.ArcOfCircle(c, math.radians(200), math.radians(330)), False)
+        S.f4_line_arc(sk)
         self.doc.recompute()
         self.b = Bl.make(self.doc, (sk, "Edge1"), (sk, "Edge2"), Continuity="G2")
         self.doc.recompute()
