@@ -618,8 +618,14 @@ def _write_fit_outputs(path, args, batch, doc, records, pictures, splines, point
                          points=points, units=units)
 
 
+def _unit(rec: Dict[str, Any]) -> str:
+    """' mm' after a figure of a record whose points file's header names its unit (QA qapy
+    F3; revD), '' where it names none."""
+    return f" {rec['unit']}" if rec.get("unit") else ""
+
+
 def _print_fit(rec: Dict[str, Any]) -> None:
-    u = f" {rec['unit']}" if rec.get("unit") else ""     # the header's (QA qapy F3)
+    u = _unit(rec)
     print(f"file        {rec['file']}" + (f"   (coordinates in{u}: its header)" if u else ""))
     if rec.get("plane"):
         n = np.asarray(rec["plane"]["normal"])
@@ -636,13 +642,12 @@ def _print_fit(rec: Dict[str, Any]) -> None:
     if rec.get("curve"):
         # the start to the curve's size's digits (QA18 P1); a keyline side's in the file's
         # frame, its x''y'' one beside (the JSON's "curve")
-        where = ("the plane's x'y'" if rec.get("plane") else "the file's x, y")
-        for key, said in (("curve_input", f"   ({where})"), ("curve", "")):
-            if key in rec:
-                print(("parameters  " if key == "curve_input" or "curve_input" not in rec else
-                       "            ") + ", ".join(f"{k}={text}" for k, text in curve_values(
-                           rec[key])) + (said or ("   (x''y'': the keyline's PCA frame)"
-                                                  if "curve_input" in rec else "")))
+        rows = [(rec["curve"], "")] if "curve_input" not in rec else [
+            (rec["curve_input"], "   (the plane's x'y')" if rec.get("plane") else
+             "   (the file's x, y)"), (rec["curve"], "   (x''y'': the keyline's PCA frame)")]
+        for i, (curve, said) in enumerate(rows):
+            print(("            " if i else "parameters  ")
+                  + ", ".join(f"{k}={text}" for k, text in curve_values(curve)) + said)
         if "fitted_points" in rec:   # --step: whatever distance fitted the polygon (QA13)
             how = "point-to-curve: the file's points to the curve drawn"
         else:
@@ -654,7 +659,7 @@ def _print_fit(rec: Dict[str, Any]) -> None:
                                                       if "side" in rec else ""))
         _print_uncertainty(rec)
     if rec.get("bspline"):
-        _print_bspline(rec["bspline"], unit=rec.get("unit"))
+        _print_bspline(rec["bspline"], unit=u)
         if "fitted_points" not in rec:     # --step: the rms above is already the cubic's
             _print_cubic(rec, "points")
     print(f"status      {rec['status']}")
@@ -663,14 +668,15 @@ def _print_fit(rec: Dict[str, Any]) -> None:
 def _print_cubic(rec: Dict[str, Any], whose: str) -> None:
     """A discrete fit's B-spline's own distances to the points (_cubic_figures)."""
     if "bspline_rms" in rec:
-        u = f" {rec['unit']}" if rec.get("unit") else ""     # the header's (F3; revD)
+        u = _unit(rec)
         print(f"            the {whose} lie rms {_fmt(rec['bspline_rms'])}{u}, max "
               f"{_fmt(rec['bspline_max_error'])}{u} from it (the rms and max error above "
               "are to the polygon)")
 
 
-def _print_bspline(b: Dict[str, Any], what: str = "", unit: Optional[str] = None) -> None:
-    dev = (f"max deviation {_fmt(b['max_deviation'])}{' ' + unit if unit else ''}"
+def _print_bspline(b: Dict[str, Any], what: str = "", unit: str = "") -> None:
+    """The report's B-spline line; ``unit``: _unit's ' mm' after its max deviation."""
+    dev = (f"max deviation {_fmt(b['max_deviation'])}{unit}"
            if b["max_deviation"] >= 0
            else "through the vertices (C2 cubic)")
     print(f"B-spline    {what}degree {b['degree']}, {len(b['poles'])} poles, {dev}")
@@ -693,12 +699,12 @@ def cmd_fit(args) -> int:
             if len(recs) > 1:       # a keyline: the file's own points to the whole curve
                 print()
                 r = recs[0]
-                u = f" {r['unit']}" if r.get("unit") else ""
+                u = _unit(r)
                 print(f"keyline     rms {_fmt(r['input_rms'])}{u}, max error "
                       f"{_fmt(r['input_max_error'])}{u}"
                       f"   (the file's {r['input_points']} points to the keyline, in its plane)")
                 if doc.get("bspline"):
-                    _print_bspline(doc["bspline"], "of the keyline: ", doc.get("unit"))
+                    _print_bspline(doc["bspline"], "of the keyline: ", _unit(doc))
                     _print_cubic(doc, "file's points")
         return EXIT_OK if all(r["converged"] for r in recs) else EXIT_NOCONV
     progress = _Progress(len(files), args.progress or sys.stderr.isatty())
