@@ -55,6 +55,7 @@ def cmd_g2quad(args) -> int:
         # seed 002 §4.2: ~20 samples per vertex; a curve fitted to them (--fit) as a fit's
         # JSON (QA: 150 points -> 7 edges, the B-spline 0.51 off a fit of rms 0.047)
         n = args.edges or (40 if args.fit else max(6, (len(src) - 1) // 20))
+    units = dxf_units(args.file, unit, args) if args.dxf else None   # (before the build)
     try:
         with warnings.catch_warnings(record=True) as caught:    # said below, the CLI's way
             warnings.simplefilter("always", el.EndTangentWarning)
@@ -74,7 +75,6 @@ def cmd_g2quad(args) -> int:
         else:                                                 # as before: Python's own
             warnings.showwarning(w.message, w.category, w.filename, w.lineno)
     jumps = f"{g.curvature_jump:.2g}"
-    units = dxf_units(args.file, unit, args) if args.dxf else None
     rec = {"file": str(source), "unit": unit, "edges": int(n), "pieces": len(g.bsplines), "plane": plane,
            "ends": g.ends, "covers_source": g.covers_source, "ends_covered": g.ends_covered,
            "deviation": g.deviation,
