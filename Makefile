@@ -4,6 +4,8 @@
 # the header's EL_VERSION_STRING (include/elastica.h: the one place the version is written)
 VERSION      := $(shell sed -n 's/^\#define EL_VERSION_STRING "\(.*\)"$$/\1/p' include/elastica.h)
 $(if $(VERSION),,$(error no EL_VERSION_STRING "MAJOR.MINOR.PATCH" line in include/elastica.h))
+# soname libelastica.so.0 until 1.0: a public struct may still grow (the README says so; el_abi_digest
+# tells a program built against another header); from 1.0 a layout change bumps it
 SOVERSION    := 0
 BUILD        ?= build
 PREFIX       ?= /usr/local
