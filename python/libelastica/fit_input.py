@@ -62,7 +62,10 @@ def require_distinct(pts: np.ndarray, name: str = "fit", need: int = 4) -> None:
     other are one (equal to rounding: no curve can be told from them). All points equal is
     :func:`fit`'s SingularError (they name no curve at all). ``name``: the caller's, before
     the message. One pass for the points' size, then none where the first 4 (or 64) rows
-    hold ``need`` distinct points, else at most ``need`` passes."""
+    hold ``need`` distinct points, else at most ``need`` passes. Not el_fit_distinct's rule
+    (a run of *consecutive* repeats within 1e-12 of the rms radius, kept once for the noise
+    figure): this one counts *any* earlier equal point, so rows alternating between two
+    points are 2 distinct points, not n."""
     n = len(pts)
     if n < need:
         raise ValueError(f"{name}: need at least {need} points, got {n}")
