@@ -188,6 +188,10 @@ double el__hermite_crossing_refine(const hprob *pr, int b, double x);
 /* Raw solutions of the normalised problem. */
 typedef struct { double x; int b; double sigma; hstate st; } hroot;
 typedef struct { hroot *v; size_t n, cap; } hrootlist;
+/* el__hermite_roots_push's first block: 7 roots, 1008 bytes, within glibc's per-thread cache
+ * of small blocks (tcache, up to 1032 bytes), whose malloc and free take a few instructions
+ * where a larger block's take the general path (2.5 roots per problem on bench_hermite.py's) */
+#define EL__ROOTS_FIRST (sizeof(hroot) <= 504 ? 1008 / sizeof(hroot) : 2)
 hroot el__hermite_mkroot(double x, int b, double sigma);
 int el__hermite_roots_push(hrootlist *l, const hroot *r);
 

@@ -263,7 +263,7 @@ hroot el__hermite_mkroot(double x, int b, double sigma)
 int el__hermite_roots_push(hrootlist *l, const hroot *r)
 {
     if (l->n == l->cap) {
-        size_t cap = l->cap ? 2 * l->cap : 16;
+        size_t cap = l->cap ? 2 * l->cap : EL__ROOTS_FIRST;
         hroot *v = realloc(l->v, cap * sizeof *v);
         if (!v) return EL_ENOMEM;
         l->v = v;
