@@ -52,6 +52,26 @@
  * trace's first step 0.2 / 0.5 / 0.8 (0.3 kept) +0.1 / +0.7 / +2.5 %, the separatrix chart
  * entered below 3e-4 / 3e-3 of |F| + sigma (1e-3 kept) +0.4 / +0.4 %, K1 past a fold ratio of
  * 2 / 8 (4 kept) -0.2 / +0.3 %.
+ * The separatrix chart's Newton (sep_solve, hermite_objective.c; 78 k calls, 46 k from the traces,
+ * 32 k from the seed lines' tension solves) evaluates 244 k points of ~283 instructions (69 M)
+ * plus ~15 M in its loop: at most 9 % of the length mode, ~4 % if every call took one step. The
+ * expensive calls are the predictor's (13 k with |dU| >= 0.05, 4.7 points each; the corrector's
+ * 2.6): the target |F| - sigma lies orders below the step's change of the crossing w*, so the
+ * start misses it by 1e2 .. 1e5 times the target. Not kept: a stop at 1e-10 of the target before
+ * the rounding would save 8 k of the 225 k points (0.25 %, counted on the calls' iterates); the
+ * start linear in e^y (exact where |F| - sigma is linear in w) instead of in y 961.9 -> 966.9 M
+ * (+0.5 %), with the other coordinate through sinh 965.9 M; the predictor's start from w* = w -
+ * (|F| - sigma) / d_w continued by the step's cubic Hermite interpolant 978.2 M (+1.7 %), the same
+ * 3494 solutions each; the trace's points taken where Newton reaches 5 % of the target (their y
+ * moved to the state's) find 96 fewer solutions, with 1e-3 on the corrector's points too 180
+ * fewer. Of the traces' 234.5 k evaluations (stretches between events: solutions, seeds passed)
+ * 31.7 % lead to a solution, 33.7 % to a seed with L within 20 % of Lt on the way, 16.7 % from a
+ * seed to one on a neighbouring line with L over 20 % off (one side) all the way (2247 stretches,
+ * 17 evaluations each), 3.5 % so back to the seed's own line, 6.7 % are tails so after the last
+ * seed: a certificate joining neighbouring lines' seeds without tracing saves at most ~20 % of the
+ * traces, ~11 % in all. Order alone is no such certificate: 1324 of those 2247 stretches join
+ * lines with as many seeds, and 153 of them (3.4 k evaluations) end at a seed of another rank in
+ * kappa0 than their start.
  */
 #include "hermite_length_internal.h"
 #include <stdlib.h>
