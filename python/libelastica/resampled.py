@@ -77,6 +77,21 @@ class ResampledFit(ValueEquality):
         :func:`fit`'s ``distances`` are to its curve: a discrete fit's polygon's (nearest
         points on its segments, every segment a candidate: report.closest_points), a smooth
         fit's its B-spline's (``distances``: within its tol of the curve)."""
+        return self._curve_d().copy()
+
+    def _curve_d(self) -> np.ndarray:
+        """:meth:`curve_distances`, measured once (kept in the instance's ``__dict__``,
+        beside the frozen fields: not pickled, not compared), shared by curve_rms and
+        curve_max_error."""
+        d = self.__dict__.get("_curve_distances")
+        if d is None:
+            d = self.__dict__["_curve_distances"] = self._measured_curve_distances()
+        return d
+
+    def __getstate__(self):
+        return {k: v for k, v in vars(self).items() if k != "_curve_distances"}
+
+    def _measured_curve_distances(self) -> np.ndarray:
         from .core import DiscreteElastica
         if not isinstance(self.curve, DiscreteElastica):
             return self.distances.copy()
@@ -92,12 +107,12 @@ class ResampledFit(ValueEquality):
     def curve_rms(self) -> float:
         """The ``points``' rms distance to ``curve`` (:meth:`curve_distances`): :func:`fit`'s
         ``rms``; ``rms`` is to ``bspline``, the curve drawn."""
-        return float(np.sqrt(np.mean(self.curve_distances() ** 2)))
+        return float(np.sqrt(np.mean(self._curve_d() ** 2)))
 
     @property
     def curve_max_error(self) -> float:
         """The ``points``' largest distance to ``curve`` (:meth:`curve_distances`)."""
-        return float(np.abs(self.curve_distances()).max())
+        return float(np.abs(self._curve_d()).max())
 
 
 def resampled_fits_worse(points, rms: float, start=None, constraints=None) -> Optional[float]:
