@@ -11,10 +11,14 @@ import numpy as np
 
 from ._text import coordinates
 from .cli_common import EXIT_OK, PROG, _plane_record, dxf_units, thousands
+from .g2quad_points import STRAY_FIX
 from .io import (InputError, curve_from_dict, curve_to_dict, looks_like_json, read_input,
                  read_json, read_points_unit, write_dxf_spline, write_json)
 
 __all__ = ["cmd_g2quad"]
+
+# a StrayWarning's way out (STRAY_FIX, the binding's words) in the command's words
+CLI_STRAY_FIX = "--fit, or `elastica fit --model smooth --json` and pass the JSON"
 
 
 def cmd_g2quad(args) -> int:
@@ -68,10 +72,10 @@ def cmd_g2quad(args) -> int:
             raise
         raise InputError(f"g2_quadratic: {exc.cause}; --edges {exc.edges} works, the fewest "
                          f"above {n}") from None
-    for w in caught:
-        if issubclass(w.category, el.EndTangentWarning):      # 'g2_quadratic (n edges): ...'
-            print(f"{PROG} g2quad: warning: {str(w.message).partition('): ')[2]}",
-                  file=sys.stderr)
+    for w in caught:    # 'g2_quadratic (n edges): ...', the way out in the CLI's words
+        if issubclass(w.category, (el.EndTangentWarning, el.StrayWarning)):
+            said = str(w.message).partition('): ')[2].replace(STRAY_FIX, CLI_STRAY_FIX)
+            print(f"{PROG} g2quad: warning: {said}", file=sys.stderr)
         else:                                                 # as before: Python's own
             warnings.showwarning(w.message, w.category, w.filename, w.lineno)
     jumps = f"{g.curvature_jump:.2g}"

@@ -34,6 +34,11 @@ def _sign_changes(points: np.ndarray) -> int:
 STRAY_EDGE = 0.5
 
 
+# StrayWarning's way out, in the binding's words (the CLI says its own: cli_g2quad)
+STRAY_FIX = ("fit=True (`elastica g2quad FILE --fit`) or el.fit(points, model='smooth') and "
+             "build from its curve")
+
+
 class StrayWarning(RuntimeWarning):
     """:func:`g2_quadratic`'s warning that its splines stray from the source points by more
     than STRAY_EDGE x the mean edge (their length / n): the points are too noisy for the
@@ -63,9 +68,8 @@ def _stray_warning(points: np.ndarray, n: int, length: float, deviation: float,
         f"(points {int(round(float(t_ends[p])))} to {int(round(float(t_ends[p + 1])))}, "
         f"{int(piece_start[p + 1] - piece_start[p])} edges) strays {piece_devs[p]:.3g} from its "
         f"own points: its affine polyline follows the points' noise (their discrete curvature "
-        f"changes sign {_sign_changes(points)} times over {len(points)} points), not their curve. Fit the "
-        "points first: fit=True (`elastica g2quad FILE --fit`) or el.fit(points, "
-        "model='smooth') and build from its curve; more edges do not help noisy points",
+        f"changes sign {_sign_changes(points)} times over {len(points)} points), not their "
+        f"curve. Fit the points first: {STRAY_FIX}; more edges do not help noisy points",
         p, piece_devs[p], edge)
 
 

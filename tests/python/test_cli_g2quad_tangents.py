@@ -91,3 +91,26 @@ def test_help_says_what_the_json_tangent_keys_hold(capsys):
     out = " ".join(capsys.readouterr().out.split())
     assert "end_tangent_error_rad: the source's ends'" in out
     assert "piece_end_tangent_error_rad" in out
+
+
+def test_a_stray_warning_is_said_in_the_commands_words(capsys, tmp_path):
+    """g2_quadratic's StrayWarning (review revC's noisy 40-point stroke at 24 edges) is said
+    as the command's other warnings: 'elastica g2quad: warning: the splines stray ...', its
+    way out the command's (--fit), not g2_quadratic's name and fit=True / el.fit(...)."""
+    rng = np.random.default_rng(3)
+    for m, noise in ((25, 0.1), (40, 0.3)):     # (test_g2quad_deviation's second stroke)
+        t = np.sort(rng.uniform(0, 1, m))
+        t[0], t[-1] = 0, 1
+        L, amp = rng.uniform(150, 400), rng.uniform(20, 60)
+        pts = np.c_[L * t, amp * np.sin(2 * np.pi * (t - 0.5) * rng.uniform(0.8, 1.0))]
+        pts += rng.normal(0, noise, pts.shape)
+    csv = tmp_path / "stroke.csv"
+    csv.write_text("".join(f"{x:.17g},{y:.17g}\n" for x, y in pts + (1500, -800)))
+    code, out, err = cli(capsys, "g2quad", csv, "--edges", 24)
+    assert code == 0, err
+    said = err.splitlines()
+    assert len(said) == 1 and said[0].startswith("elastica g2quad: warning: the splines stray "), err
+    assert "Fit the points first: --fit, or `elastica fit --model smooth --json`" in err, err
+    assert "fit=True" not in err and "el.fit" not in err and "g2_quadratic" not in err, err
+    code, out, err = cli(capsys, "g2quad", csv, "--edges", 24, "--fit")
+    assert code == 0 and err == "", err
