@@ -389,11 +389,11 @@ def warn_if_degrees(angle: float, name: str, stacklevel: int = 3) -> None:
     the command line's --start-tangent 90 is degrees, fit's constraints radians):
     AngleUnitWarning."""
     if abs(angle) > 2 * math.pi:
-        import warnings
-        warnings.warn(f"{name} = {angle:g}: the binding takes radians (|angle| > 2 pi is "
-                      f"read modulo 2 pi); degrees? use math.radians({angle:g}) (a continuous "
-                      "angle past a full turn, as curve.angle gives on a loop, is fine)",
-                      AngleUnitWarning, stacklevel=stacklevel + 1)
+        from ._quiet import say
+        say(f"{name} = {angle:g}: the binding takes radians (|angle| > 2 pi is "
+            f"read modulo 2 pi); degrees? use math.radians({angle:g}) (a continuous "
+            "angle past a full turn, as curve.angle gives on a loop, is fine)",
+            AngleUnitWarning, stacklevel=stacklevel + 1)
 
 
 def as_size(x, name: str, lo: int = 0, hi: int = SIZE_MAX) -> int:

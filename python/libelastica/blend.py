@@ -21,7 +21,6 @@ example "(k, d) = (0.3, 2)" is ``EllipticBlend(m=0.3, d=2)`` (modulus
 """
 from __future__ import annotations
 
-import warnings
 from dataclasses import dataclass
 from typing import Optional
 
@@ -30,6 +29,7 @@ import numpy as np
 from ._ffi import (DomainError, NotConvergedError, SingularError, as_points, as_positive, as_real,
                    as_vector,
                    bspline_from_c, check, dptr, ffi, lib, require, shown)
+from ._quiet import say
 from ._text import LengthFormat, lengths
 from ._values import ValueEquality
 from .core import arc_lengths
@@ -639,5 +639,5 @@ def blend_curve(points, k: Optional[float] = None, d: float = 2.0, mode: str = "
     else:
         curve = BlendCurve(basis, basis.composite_through(pts), through=pts)
     for category, text in curve._interpolation_warnings():
-        warnings.warn(text, category, stacklevel=2)
+        say(text, category, stacklevel=2)
     return curve

@@ -14,7 +14,6 @@ import io
 import os
 import re
 import sys
-import warnings
 from typing import Optional, Sequence
 
 import numpy as np
@@ -22,6 +21,7 @@ import numpy as np
 from ._ffi import NotConvergedError
 from ._entry import INTERRUPTED
 from ._interrupt import end_if_a_call_runs, interruptible
+from ._quiet import quiet
 from .cli_common import (ANGLE_UNITS, EXIT_BADINPUT, EXIT_INTERNAL, EXIT_NOCONV, EXIT_OK, PROG,
                          _finite, _input_map, _mapped_bspline, _table, angle, holding_advice,
                          dxf_units, said_warnings, thousands, thousands_option, tol_option)
@@ -278,9 +278,7 @@ def cmd_blend(args) -> int:
                          f"got {len(v)} numbers")
     pts = np.array(v, dtype=np.float64).reshape(-1, 2)
     kw = {"m": args.m} if args.m is not None else {"k": args.k if args.k is not None else 0.5}
-    with warnings.catch_warnings():   # said below with the basis', in the CLI's words
-        warnings.simplefilter("ignore", el.ConditionWarning)
-        warnings.simplefilter("ignore", el.BlendLoopWarning)
+    with quiet(el.ConditionWarning, el.BlendLoopWarning):   # said below, the CLI's words
         curve = el.blend_curve(pts, d=args.d, mode=args.mode, closed=args.closed, **kw)
     xy = curve.points(np.linspace(0.0, curve.nseg, 401))
     s, kappa = polygon_curvature(xy)
@@ -348,9 +346,7 @@ def cmd_spline(args) -> int:
         ends[name] = None if t is None else (
             t if k is None else {"tangent": t, "curvature": _finite(k, f"--{name}-curvature")})
     try:
-        with warnings.catch_warnings():   # said below, in the CLI's words
-            warnings.simplefilter("ignore", el.LoopWarning)
-            warnings.simplefilter("ignore", el.UnstableWarning)
+        with quiet(el.LoopWarning, el.UnstableWarning):   # said below, in the CLI's words
             sp = el.elastic_spline(pts, **kw, start=ends["start"], end=ends["end"],
                                    closed=args.closed)
     except el.DomainError as exc:     # no free batten: a tension seen to hold, if one is

@@ -4,13 +4,13 @@ from __future__ import annotations
 
 import os
 import sys
-import warnings
 from pathlib import Path
 from typing import Any, Dict, List, Optional, Tuple
 
 import numpy as np
 
 from ._ffi import ElasticaError, NotConvergedError
+from ._quiet import quiet
 from ._text import curve_values
 from .cli_common import (ANGLE_UNITS, EXIT_BADINPUT, EXIT_INTERNAL, EXIT_NOCONV, EXIT_OK, PROG,
                          _converged, _finite, _float_list, _fmt, _mapped_bspline, _plane_record,
@@ -159,8 +159,7 @@ def _resampled_record(path, args, xy: np.ndarray, fixed, constraints, numbered: 
     points' distances to it (numbered: the file's order). Returns the record, the polygon's
     FitResult and the points' feet."""
     import libelastica as el
-    with warnings.catch_warnings():     # the ResampleWarning said in the CLI's words
-        warnings.simplefilter("ignore", el.ResampleWarning)
+    with quiet(el.ResampleWarning):     # the ResampleWarning said in the CLI's words
         rr = el.fit_resampled(xy, args.step, **_fit_kwargs(args, fixed, constraints))
         free = loose = None             # loose: free ends, nothing fixed
         if constraints or fixed:
@@ -436,12 +435,10 @@ def fit_file(path: str, args, batch: bool) -> Tuple[List[Dict[str, Any]], Dict[s
             raise InputError("--keyline: the joint is the keyline's constraint; end constraints "
                              "and --distance apply to one-piece fits")
         fixed = _parse_fix(args.fix, pts[:, :2], keyline=True)
-        with warnings.catch_warnings():     # its status said in the CLI's words
-            warnings.simplefilter("ignore", el.ConvergenceWarning)
-            warnings.simplefilter("ignore", el.OrderWarning)     # _in_order says it
-            warnings.simplefilter("ignore", el.MisfitWarning)    # _misfit says it
-            warnings.simplefilter("ignore", el.SparseWarning)    # _warn_sparse_keyline says it
-            warnings.simplefilter("ignore", el.OutlierWarning)   # said below, the file's rows
+        # its status said in the CLI's words; OrderWarning: _in_order says it, MisfitWarning
+        # _misfit, SparseWarning _warn_sparse_keyline, OutlierWarning below (the file's rows)
+        with quiet(el.ConvergenceWarning, el.OrderWarning, el.MisfitWarning, el.SparseWarning,
+                   el.OutlierWarning):
             kres = el.fit_keyline(pts, r=args.step, **_fit_kwargs(args, fixed))
         _warn_sparse_keyline(path, kres, len(pts))
         # the file's points far from the keyline (el.fit's rule), by their rows (QA23: the

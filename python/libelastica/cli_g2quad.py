@@ -5,10 +5,10 @@ tangent and curvature errors."""
 from __future__ import annotations
 
 import sys
-import warnings
 
 import numpy as np
 
+from ._quiet import quiet
 from ._text import coordinates
 from .cli_common import EXIT_OK, PROG, _plane_record, dxf_units, thousands
 from .g2quad_points import STRAY_FIX
@@ -61,8 +61,7 @@ def cmd_g2quad(args) -> int:
         n = args.edges or (40 if args.fit else max(6, (len(src) - 1) // 20))
     units = dxf_units(args.file, unit, args) if args.dxf else None   # (before the build)
     try:
-        with warnings.catch_warnings(record=True) as caught:    # said below, the CLI's way
-            warnings.simplefilter("always", el.EndTangentWarning)
+        with quiet(el.EndTangentWarning, el.StrayWarning, into=[]) as caught:   # said below
             g = el.g2_quadratic(src, n, fit=args.fit)
     except el.CoverageError as exc:     # an error, nothing written (as FreeCAD's feature)
         raise InputError(_coverage_message(exc, n, args.edges is None,
@@ -73,11 +72,8 @@ def cmd_g2quad(args) -> int:
         raise InputError(f"g2_quadratic: {exc.cause}; --edges {exc.edges} works, the fewest "
                          f"above {n}") from None
     for w in caught:    # 'g2_quadratic (n edges): ...', the way out in the CLI's words
-        if issubclass(w.category, (el.EndTangentWarning, el.StrayWarning)):
-            said = str(w.message).partition('): ')[2].replace(STRAY_FIX, CLI_STRAY_FIX)
-            print(f"{PROG} g2quad: warning: {said}", file=sys.stderr)
-        else:                                                 # as before: Python's own
-            warnings.showwarning(w.message, w.category, w.filename, w.lineno)
+        said = str(w).partition('): ')[2].replace(STRAY_FIX, CLI_STRAY_FIX)
+        print(f"{PROG} g2quad: warning: {said}", file=sys.stderr)
     jumps = f"{g.curvature_jump:.2g}"
     rec = {"file": str(source), "unit": unit, "edges": int(n), "pieces": len(g.bsplines), "plane": plane,
            "ends": g.ends, "covers_source": g.covers_source, "ends_covered": g.ends_covered,

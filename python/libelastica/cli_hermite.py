@@ -3,10 +3,10 @@
 from __future__ import annotations
 
 import sys
-import warnings
 
 import numpy as np
 
+from ._quiet import quiet
 from ._text import coordinates
 from .cli_common import EXIT_NOCONV, EXIT_OK, PROG, _finite, _table, tol_option
 from .io import InputError, curve_to_dict, write_dxf_spline, write_json
@@ -31,8 +31,7 @@ def _hermite_tol_advice(p0, t0, p1, t1, kw, tol: float) -> str:
     smallest of 10 x, 100 x ... 1e4 x tol that returns them all (solved again to know)."""
     import libelastica as el
     for larger in tol * 10.0 ** np.arange(1, 5):
-        with warnings.catch_warnings():
-            warnings.simplefilter("ignore", RuntimeWarning)
+        with quiet(RuntimeWarning):
             if not el.hermite(p0, t0, p1, t1, **kw, tol=larger).unrepresentable:
                 return f"--tol {larger:.0e} returns them"
     return f"not even --tol {tol * 1e4:.0e} returns them"
@@ -49,11 +48,10 @@ def cmd_hermite(args) -> int:
         raise InputError(f"--solution {args.solution} picks the solution --dxf writes: give --dxf "
                          "too (the table and the JSON have them all)")
     chosen = args.solution or 0
-    with warnings.catch_warnings(record=True) as caught:   # said below, the CLI's way
-        warnings.simplefilter("always")
+    with quiet(into=[]) as caught:     # the binding's, said below the CLI's way
         sols = el.hermite(p0, t0, p1, t1, **kw, tol=args.tol)
     for w in caught:
-        print(f"{PROG} hermite: warning: {str(w.message).removeprefix('hermite: ')}",
+        print(f"{PROG} hermite: warning: {str(w).removeprefix('hermite: ')}",
               file=sys.stderr)
     missing = sols.unrepresentable
     advice = _hermite_tol_advice(p0, t0, p1, t1, kw, args.tol) if missing else ""

@@ -8,10 +8,11 @@ model's curve 0.031). :func:`cubic_distances` measures the points against that c
 feature say in their words)."""
 from __future__ import annotations
 
-import warnings
 from typing import NamedTuple, Optional
 
 import numpy as np
+
+from ._quiet import quiet
 
 __all__ = ["SPARSE_POINTS", "SPARSE_RATIO", "SPARSE_FLOOR", "SparseWarning", "CubicDistances",
            "cubic_distances", "smooth_fits_better"]
@@ -85,8 +86,7 @@ def smooth_fits_better(points, rms: float, constraints=None, keyline=None) -> Op
             smooth = quiet_fit(pts, model="smooth", constraints=constraints or None).rms
         else:
             from .keyline import fit_keyline
-            with warnings.catch_warnings():   # its verdict only
-                warnings.simplefilter("ignore")
+            with quiet():     # its verdict only (this thread's warnings: _quiet.py)
                 smooth = fit_keyline(pts, model="smooth", **keyline).input_rms
     except (ValueError, ArithmeticError, RuntimeError):
         return None

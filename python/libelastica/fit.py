@@ -18,7 +18,6 @@ from __future__ import annotations
 import dataclasses
 import math
 import numbers
-import warnings
 from dataclasses import dataclass
 from typing import Mapping, Optional, Union
 
@@ -28,6 +27,7 @@ from ._ffi import (DomainError, NotConvergedError, SingularError, as_int, as_poi
                    as_real_array, check, checked_points, dptr, ffi, lib, warn_if_degrees)
 from ._interrupt import call
 from ._median import median
+from ._quiet import quiet, say
 from .core import DISCRETE_PARAMS, SMOOTH_PARAMS, DiscreteElastica, SmoothElastica
 from .cubic import SPARSE_POINTS, SparseWarning, smooth_fits_better
 from ._text import LengthFormat, lengths
@@ -658,17 +658,17 @@ def _fit(points, model: str = "discrete", fixed: Optional[Mapping[str, float]] =
     if strict and st != lib.EL_OK:
         check(st, "fit")
     if st != lib.EL_OK:     # a status 6 went unnoticed unless the caller read it (QA)
-        warnings.warn(f"fit: not converged: {ffi.string(lib.el_strerror(st)).decode()} (status {st}); "
-                      "strict=True raises instead", ConvergenceWarning, stacklevel=3)
+        say(f"fit: not converged: {ffi.string(lib.el_strerror(st)).decode()} (status {st}); "
+            "strict=True raises instead", ConvergenceWarning, stacklevel=3)
     if unordered is not None and unordered.order is not None:
-        warnings.warn(f"fit: {order_summary(unordered)}: fitted in their order, the curve may coil "
-                      "through them; order='curve' fits them in curve order (el.curve_order)",
-                      OrderWarning, stacklevel=3)
+        say(f"fit: {order_summary(unordered)}: fitted in their order, the curve may coil "
+            "through them; order='curve' fits them in curve order (el.curve_order)",
+            OrderWarning, stacklevel=3)
     elif given_rms is not None:
-        warnings.warn(f"fit: {retrace_summary(back)}: fitted in curve order (as order='curve'; "
-                      f"el.curve_order) at rms {res.rms:.3g}, against {given_rms:.3g} in the "
-                      "points' order, distances and feet given in the points' order",
-                      OrderWarning, stacklevel=3)
+        say(f"fit: {retrace_summary(back)}: fitted in curve order (as order='curve'; "
+            f"el.curve_order) at rms {res.rms:.3g}, against {given_rms:.3g} in the "
+            "points' order, distances and feet given in the points' order",
+            OrderWarning, stacklevel=3)
     else:
         # points that run back: the fit's feet fall there when it follows them (the smooth
         # model's, by distance); a fit that coils or wanders through a scan passed back and
@@ -699,11 +699,11 @@ def _fit(points, model: str = "discrete", fixed: Optional[Mapping[str, float]] =
         if back is not None:
             hint = ("order='curve' fits them in curve order (el.curve_order)" if tried is None else
                     f"in curve order (order='curve') the rms is {tried:.3g}, against {res.rms:.3g}")
-            warnings.warn(f"fit: {retrace_summary(back)}; {hint}", OrderWarning, stacklevel=3)
+            say(f"fit: {retrace_summary(back)}; {hint}", OrderWarning, stacklevel=3)
         elif res.wander_gap >= 0:
-            warnings.warn(f"fit: {wander_summary(res.wander_gap)}: add a point between them to hold it "
-                          "there, or bound the curve's length (constraints={'length': (lo, hi)})",
-                          WanderWarning, stacklevel=3)
+            say(f"fit: {wander_summary(res.wander_gap)}: add a point between them to hold it "
+                "there, or bound the curve's length (constraints={'length': (lo, hi)})",
+                WanderWarning, stacklevel=3)
     r = _result(model, res, st, pts.copy(), dist, foot, s, constraints, idx, back, fixed)
     if flip:     # the same curve run from the end of point 0 (curve order ran from the other)
         r = _fit_result(**dict(r.__dict__, curve=r.curve.reversed(), initial=r.initial.reversed()))
@@ -732,10 +732,10 @@ def _sparse(r: FitResult, constraints) -> FitResult:
     if smooth is None:
         return r
     n = len(r.points)
-    warnings.warn(f"fit: the discrete model's polygon of {n - 1} segments lies {r.rms:.3g} from "
-                  f"the {n} points (rms), its cubic {cubic:.3g}, the smooth model's curve "
-                  f"{smooth:.3g}: fewer than {SPARSE_POINTS} points; use model='smooth'",
-                  SparseWarning, stacklevel=4)
+    say(f"fit: the discrete model's polygon of {n - 1} segments lies {r.rms:.3g} from "
+        f"the {n} points (rms), its cubic {cubic:.3g}, the smooth model's curve "
+        f"{smooth:.3g}: fewer than {SPARSE_POINTS} points; use model='smooth'",
+        SparseWarning, stacklevel=4)
     return dataclasses.replace(r, sparse=smooth)
 
 
@@ -765,7 +765,7 @@ def _judged(r: FitResult, judged: Optional[FitResult], fig: _Figures) -> FitResu
         if min(abs(m.corner - judged.retrace.first), abs(m.corner - judged.retrace.last)) <= w:
             m = dataclasses.replace(m, corner=-1, parts=None)
     said = misfit_summary(m, judged.points, numbered=judged.order is None)   # curve order: by place
-    warnings.warn(f"fit: {said}", MisfitWarning, stacklevel=4)
+    say(f"fit: {said}", MisfitWarning, stacklevel=4)
     return dataclasses.replace(r, misfit=m)
 
 
@@ -789,10 +789,8 @@ def judging_fit(points, *args, **kwargs) -> FitResult:
 
 
 def _quietly(fit_by, points, args, kwargs) -> FitResult:
-    with warnings.catch_warnings():
-        for w in (ConvergenceWarning, WanderWarning, EndConditionWarning, MisfitWarning, OutlierWarning,
-                  SparseWarning):
-            warnings.simplefilter("ignore", w)
+    with quiet(ConvergenceWarning, WanderWarning, EndConditionWarning, MisfitWarning,
+               OutlierWarning, SparseWarning):     # (this thread's only: _quiet.py)
         return fit_by(points, *args, **dict(dict(check_ends=False, check_misfit=False,
                                                  check_sparse=False), **kwargs))
 

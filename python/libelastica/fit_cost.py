@@ -14,11 +14,11 @@ from __future__ import annotations
 
 import dataclasses
 import math
-import warnings
 from typing import Iterable, Mapping, Optional
 
 import numpy as np
 
+from ._quiet import say
 from ._text import LengthFormat, lengths
 
 __all__ = ["COST_RATIO", "COST_FLOOR", "END_SPAN", "END_POINTS", "EndConditionWarning", "costly",
@@ -169,7 +169,7 @@ def checked_ends(result, fixed: Optional[Mapping[str, float]], options: dict,
         said = local_cost_summary(", ".join(held), at[0], at[2], at[1])
     else:
         return result
-    warnings.warn(EndConditionWarning(
+    say(EndConditionWarning(
         f"fit: {said} (FitResult.free is the fit with free ends; check_ends=False skips it)",
         result.rms, free.rms, held, *at), stacklevel=stacklevel)
     return result

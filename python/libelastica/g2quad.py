@@ -7,13 +7,13 @@ from __future__ import annotations
 
 import dataclasses
 import math
-import warnings
 from dataclasses import dataclass
 from typing import Optional, Tuple
 
 import numpy as np
 
 from ._ffi import DomainError, as_points, as_size, lib
+from ._quiet import say
 from ._values import ValueEquality
 from .affine import (AffinePolyline, EdgeCountError, EndPieces, _curve_samples, _is_curve,
                      affine_end_pieces, affine_polyline, elastica_inflections, g2_bspline, quadratic_joint_curvatures)
@@ -280,7 +280,7 @@ def _say(said: Optional[list], plain: bool, warning: Warning) -> None:
     if said is not None:
         said.append(warning)
     else:                   # (1 here, 2 g2_quadratic, 3 its caller)
-        warnings.warn(warning, stacklevel=3)
+        say(warning, stacklevel=3)
 
 
 class CoverageWarning(RuntimeWarning):

@@ -6,12 +6,12 @@ from __future__ import annotations
 import copy
 import dataclasses
 import math
-import warnings
 from typing import Optional
 
 import numpy as np
 
 from ._ffi import DomainError, as_points, as_real
+from ._quiet import say
 from .bspline import BSpline
 from .core import SmoothElastica
 
@@ -244,7 +244,7 @@ def _built_locally(build, source, R: np.ndarray, coverage_error, said=None):
             if said is not None:
                 said.append(w)
             else:           # (1 here, 2 g2_quadratic, 3 its caller)
-                warnings.warn(w, stacklevel=3)
+                say(w, stacklevel=3)
 
 
 def _end_curvatures(given, is_curve: bool):

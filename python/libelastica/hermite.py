@@ -5,13 +5,13 @@ from __future__ import annotations
 import math
 import struct
 import threading
-import warnings
 from typing import List, Optional
 
 import numpy as np
 
 from ._ffi import DomainError, as_int, as_real, as_size, as_vector, check, ffi, lib, require
 from ._portable import PortablePickle
+from ._quiet import say
 from ._values import ValueEquality
 from .bspline import smooth_chain_to_bspline
 from .core import SMOOTH_PARAMS, SmoothElastica, arc_lengths, chain_eval, chain_starts
@@ -365,15 +365,15 @@ def hermite(p0, t0, p1, t1, tension: Optional[float] = None,
             out.append(e if npieces == 1 else _chain(row, solve_args[5][len(out)]))
         if unrepresentable:
             out.unrepresentable = unrepresentable
-            warnings.warn(f"hermite: {unrepresentable} more curve(s) exist that no smooth "
-                          f"parameters meet to tol={tol:g} (too close to the separatrix |k| = 1, "
-                          "or, at tension 0, so nearly straight that they are a sliver of a huge "
-                          "elastica); a larger tol returns them", RuntimeWarning, stacklevel=2)
+            say(f"hermite: {unrepresentable} more curve(s) exist that no smooth "
+                f"parameters meet to tol={tol:g} (too close to the separatrix |k| = 1, "
+                "or, at tension 0, so nearly straight that they are a sliver of a huge "
+                "elastica); a larger tol returns them", RuntimeWarning, stacklevel=2)
         if status:
             out.complete = False
-            warnings.warn(f"hermite: length mode reached its work limit; the {len(out)} solution(s) "
-                          "found so far are returned (the list's complete is False)",
-                          RuntimeWarning, stacklevel=2)
+            say(f"hermite: length mode reached its work limit; the {len(out)} solution(s) "
+                "found so far are returned (the list's complete is False)",
+                RuntimeWarning, stacklevel=2)
         return out
     finally:
         _local.state = state

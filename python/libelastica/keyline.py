@@ -5,7 +5,6 @@ from __future__ import annotations
 
 import dataclasses
 import math
-import warnings
 from dataclasses import dataclass
 from typing import Optional
 
@@ -14,6 +13,7 @@ import numpy as np
 from ._ffi import (DomainError, as_int, as_point_array, as_positive, as_real, check,
                    dptr, ffi, lib, transpose_hint)
 from ._interrupt import call
+from ._quiet import quiet, say
 from ._values import ValueEquality
 from .core import SmoothElastica
 from .cubic import SPARSE_POINTS, SparseWarning, smooth_fits_better
@@ -294,8 +294,8 @@ def fit_keyline(points, r: Optional[float] = None, model: str = "discrete", side
         raise ValueError("fit_keyline: points must be finite (no NaN/inf)")
     unordered = out_of_order(pts)    # resampled along their polyline: a cloud's is no curve's
     if unordered.order is not None:
-        warnings.warn(f"fit_keyline: {order_summary(unordered)}: resampled in their order; "
-                      "fit points[el.curve_order(points)]", OrderWarning, stacklevel=2)
+        say(f"fit_keyline: {order_summary(unordered)}: resampled in their order; "
+            "fit points[el.curve_order(points)]", OrderWarning, stacklevel=2)
     side = as_int(side, "fit_keyline: side (-1 the first point, +1 the last, 0 automatic)", -1, 1)
     if r is not None:
         r = as_positive(r, "fit_keyline: r (the resampling segment, None: automatic)")
@@ -372,7 +372,7 @@ def fit_keyline(points, r: Optional[float] = None, model: str = "discrete", side
     m = misfit(local, inputs, strays=False) if not kwargs.get("fixed") else None
     if m is not None:
         said = misfit_summary(m, what="one keyline (its joint is an inflection, G2)")
-        warnings.warn(f"fit_keyline: {said}", MisfitWarning, stacklevel=2)
+        say(f"fit_keyline: {said}", MisfitWarning, stacklevel=2)
     if m is None and not _inner and not kwargs.get("fixed"):   # (a corner: misfit said it)
         _second_inflection(fits, local)
     # spikes: el.fit's OutlierWarning, the input's own numbering (the sides' FitResults
@@ -383,13 +383,13 @@ def fit_keyline(points, r: Optional[float] = None, model: str = "discrete", side
         rms = float(np.sqrt(np.mean(inputs ** 2)))
         sparse = smooth_fits_better(pts, rms, keyline={"r": r, "side": side})
         if sparse is not None:
-            warnings.warn(f"fit_keyline: the discrete keyline lies {rms:.3g} from the {len(pts)} "
-                          f"points (rms), the smooth keyline {sparse:.3g}: fewer than "
-                          f"{SPARSE_POINTS} points resample to a polygon that cuts their bends; "
-                          "use model='smooth'", SparseWarning, stacklevel=2)
+            say(f"fit_keyline: the discrete keyline lies {rms:.3g} from the {len(pts)} "
+                f"points (rms), the smooth keyline {sparse:.3g}: fewer than "
+                f"{SPARSE_POINTS} points resample to a polygon that cuts their bends; "
+                "use model='smooth'", SparseWarning, stacklevel=2)
     if st != lib.EL_OK:     # as fit's (QA: both sides at status 6, silently); not before a refusal
-        warnings.warn(f"fit_keyline: not converged: {ffi.string(lib.el_strerror(st)).decode()} "
-                      f"(status {st})", ConvergenceWarning, stacklevel=2)
+        say(f"fit_keyline: not converged: {ffi.string(lib.el_strerror(st)).decode()} "
+            f"(status {st})", ConvergenceWarning, stacklevel=2)
     return KeylineFit(prepared=prep, inflection=infl, first=fits[0], second=fits[1],
                       inflection_estimate=i0, joint=prep.to_input(J), input_distances=inputs,
                       ends=None if ends is None else prep.to_input(ends), joint_local=J,
@@ -424,15 +424,14 @@ def _second_inflection(fits, local) -> None:
                 continue
             if len(fig.seen) < 4 or not f.rms > SPLIT_RATIO * fig.level:   # (noise_level's)
                 continue
-            with warnings.catch_warnings():
-                warnings.simplefilter("ignore")
+            with quiet():     # (this thread's warnings only: _quiet.py)
                 kf = fit_keyline(pts, _inner=True)   # (discrete: a polygon of ~60 vertices)
         except (ValueError, ArithmeticError, RuntimeError):
             continue
         if not kf.input_rms <= SPLIT_GAIN * f.rms:
             continue
         at = int(np.argmin(np.linalg.norm(local - np.asarray(kf.joint)[:2], axis=1)))
-        warnings.warn(MisfitWarning(
+        say(MisfitWarning(
             f"fit_keyline: the points show a second inflection, near input point {at} "
             f"(counted from 0) on the {('first', 'second')[c]} side: two elasticae joined there "
             f"fit that side's {len(pts)} points at rms {kf.input_rms:.3g}, the keyline's one "
@@ -449,8 +448,8 @@ def _input_outliers(local, inputs) -> tuple:
     from .misfit import OutlierWarning, outliers_summary
     far = tuple(int(i) for i in far_points(inputs, local))
     if far:
-        warnings.warn(OutlierWarning("fit_keyline: " + outliers_summary(inputs, list(far)), far),
-                      stacklevel=3)
+        say(OutlierWarning("fit_keyline: " + outliers_summary(inputs, list(far)), far),
+            stacklevel=3)
     return far
 
 

@@ -14,13 +14,13 @@ None
 """
 from __future__ import annotations
 
-import warnings
 from dataclasses import dataclass
 from typing import Optional, Tuple
 
 import numpy as np
 
 from ._ffi import as_points, check, dptr, ffi, lib
+from ._quiet import quiet, say
 from ._text import LengthFormat, coordinates, lengths
 from ._values import ValueEquality
 
@@ -621,8 +621,7 @@ def split_hint(points, distances, how: str = "fit_keyline", unit: str = "",
         return None
     from .keyline import fit_keyline
     try:
-        with warnings.catch_warnings():
-            warnings.simplefilter("ignore")     # the keyline is asked, not shown
+        with quiet():           # the keyline is asked, not shown (this thread's: _quiet.py)
             kf = fit_keyline(pts, model="smooth")
     except (ValueError, ArithmeticError, RuntimeError):
         return None                             # no inflection, or no keyline: no hint
@@ -703,7 +702,7 @@ def _warn_outliers(r) -> None:
     said = outliers_summary(r.distances, far, rows, free) if stray is None else \
         stray_summary(len(r.points), stray, rows[0])
     # stacklevel: _warn_outliers, _fit, fit, its caller
-    warnings.warn(OutlierWarning("fit: " + said, rows), stacklevel=4)
+    say(OutlierWarning("fit: " + said, rows), stacklevel=4)
 
 
 def stray_summary(n: int, stray, row: int, unit: str = "",

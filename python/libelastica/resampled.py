@@ -10,13 +10,13 @@ than their curve (2000 points 2 mm apart, noise 0.5 mm, a 4 m elastica: resample
 """
 from __future__ import annotations
 
-import warnings
 from dataclasses import dataclass
 from typing import Optional
 
 import numpy as np
 
 from ._ffi import as_points, as_positive
+from ._quiet import say
 from ._text import LengthFormat, lengths
 from ._values import ValueEquality, field_summary
 from .fit import FitResult, quiet_fit
@@ -185,8 +185,8 @@ def fit_resampled(points, step: float, model: str = "discrete", *, tol: float = 
     if check:
         ref = resampled_reference(pts, rms, polygon, r.curve, kwargs.get("constraints"))
         if ref is not None:
-            warnings.warn(resample_summary(step, rms, ref, extent=_extent(pts)), ResampleWarning,
-                          stacklevel=2)
+            say(resample_summary(step, rms, ref, extent=_extent(pts)), ResampleWarning,
+                stacklevel=2)
     return ResampledFit(result=r, polygon=polygon, points=pts.copy(), step=float(step),
                         bspline=bspline, distances=dist, feet=feet, rms=rms,
                         max_error=float(np.abs(dist).max()), reference_rms=ref,

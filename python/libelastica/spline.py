@@ -14,6 +14,7 @@ import numpy as np
 
 from ._ffi import (DomainError, ElasticaError, LengthRangeError, NotConvergedError, as_int,
                    as_points, as_real, check, dptr, ffi, lib)
+from ._quiet import quiet, quieted, say
 from ._values import ValueEquality
 from .bspline import smooth_chain_to_bspline
 from .core import SMOOTH_PARAMS, SmoothElastica, arc_lengths, chain_eval, chain_starts
@@ -393,10 +394,7 @@ def holding_tension(points, start=None, end=None, closed=False, above=0.0):
         if not tension > above:
             continue
         try:
-            with warnings.catch_warnings():
-                warnings.simplefilter("ignore", LoopWarning)
-                warnings.simplefilter("ignore", UnstableWarning)
-                warnings.simplefilter("ignore", SeamWarning)
+            with quiet(LoopWarning, UnstableWarning, SeamWarning):   # (this thread's)
                 sp = elastic_spline(pts, tension=tension, start=start, end=end, closed=closed)
         except DoublesBackError:      # the points', at every tension: said as it is
             raise
@@ -408,10 +406,12 @@ def holding_tension(points, start=None, end=None, closed=False, above=0.0):
 
 
 def _shown(category) -> bool:
-    """Whether warnings.warn(category) would be shown, as far as the filters without a
-    message or module pattern tell (the first one matching decides, as in warnings; one
-    with a pattern is taken as showing): a hand-written look at warnings.filters, which
-    has no public query, to spare the ladder's solves where the warning is ignored."""
+    """Whether say(category) would be shown: not in a quiet scope of this thread, and as far
+    as the filters without a message or module pattern tell (the first one matching decides,
+    as in warnings; one with a pattern is taken as showing): a hand-written look at
+    warnings.filters, which has no public query, to spare the ladder's solves."""
+    if quieted(category):
+        return False
     for action, msg, cat, mod, _ in warnings.filters:
         if issubclass(category, cat) and msg is None and mod is None:
             return action != "ignore"
@@ -682,12 +682,12 @@ def elastic_spline(points, tension: Optional[float] = None, length: Optional[flo
                         f" (the longest met without loops: {fair / polygon:.4g} x the polygon, "
                         f"{fair:.6g})" if fair > 0.0 else "")
                 where = sp.crossing_text()
-                warnings.warn("elastic_spline: the spline loops away from its ducks (it crosses "
-                              "itself where their polygon does not, or is longer than 4 x it, "
-                              f"{sp.length:.4g}" + (f"; it crosses itself {where}, points counted from 0"
-                                                    if where else "") +
-                              f"): no fair batten was found at {fix}",
-                              LoopWarning, stacklevel=2)
+                say("elastic_spline: the spline loops away from its ducks (it crosses "
+                    "itself where their polygon does not, or is longer than 4 x it, "
+                    f"{sp.length:.4g}" + (f"; it crosses itself {where}, points counted from 0"
+                                          if where else "") +
+                    f"): no fair batten was found at {fix}",
+                    LoopWarning, stacklevel=2)
             if sp.unstable:
                 fix = ((("try " if sp.holding()[0] is not None else "") + sp.holding_text())
                        if advise else "try a larger tension (el.holding_tension), or ease the "
@@ -695,13 +695,13 @@ def elastic_spline(points, tension: Optional[float] = None, length: Optional[flo
                     f"try another length than {length:.6g} (or a tension), or ease the sharpest turn there"
                 said = None if length is None else \
                     f"by length {length:.6g}, tension {sp.tension:.6g}"
-                warnings.warn("elastic_spline: " + sp.unstable_text(fix, said), UnstableWarning,
+                say("elastic_spline: " + sp.unstable_text(fix, said), UnstableWarning,
                     stacklevel=2)
             if seam:
                 a = sp.pieces[-1].angle(np.array([sp.pieces[-1].length]))[0] - sp.pieces[0].angle(np.zeros(1))[0]
                 corner = abs(math.degrees(math.remainder(a, 2 * math.pi)))
-                warnings.warn(f"elastic_spline: an open spline with a {corner:.3g} deg corner at "
-                              f"point 0{_SEAM_TEXT}", SeamWarning, stacklevel=2)
+                say(f"elastic_spline: an open spline with a {corner:.3g} deg corner at "
+                    f"point 0{_SEAM_TEXT}", SeamWarning, stacklevel=2)
             return sp
         if st == lib.EL_EDOM:   # the cases above are checked: the free batten
             # res.slides: one was found but is no minimum (elastica.h), its span named
