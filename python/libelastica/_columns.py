@@ -13,6 +13,12 @@ from typing import List, Optional
 
 import numpy as np
 
+
+class InputError(ValueError):
+    """Bad user input (a file that is missing, malformed, or holds unusable points)."""
+    __module__ = "libelastica.io"   # (defined here, below io and _dxf, which both raise it)
+
+
 # a coordinate column's name: x, Y, "z [mm]", "x (mm)" (a CSV header's too: io.py)
 AXIS_NAME = re.compile(r"\s*([xyzXYZ])\s*(?:[\[(](.*)[\])])?\s*")
 # a header's length unit, as the DXF's $INSUNITS names it (io.DXF_UNITS) where it is one of

@@ -8,6 +8,8 @@ from typing import Optional, Union
 
 import numpy as np
 
+from ._columns import InputError
+
 PathLike = Union[str, Path]
 
 
@@ -80,7 +82,6 @@ def write_dxf_spline(splines, path: PathLike, points: Optional[np.ndarray] = Non
     are the geometry's. ``closed``: the curves are closed (an elastic spline's ring),
     flagged so (and periodic where their knots are). Raises InputError when ezdxf is not
     installed or units is unknown."""
-    from .io import InputError     # (here: io imports this module for its names)
     try:
         import ezdxf
     except ImportError:

@@ -315,8 +315,8 @@ def cmd_blend(args) -> int:
                                        marker="o", line=True, size=4.0))
             save_picture(pic, args.outputs.path(spec))
     if args.dxf:
-        write_dxf_spline(b, args.outputs.path(args.dxf), points=pts, units=args.units,
-                         closed=curve.closed)
+        write_dxf_spline(b, args.outputs.path(args.dxf), points=pts,
+                         units=dxf_units(None, None, args), closed=curve.closed)
     return EXIT_OK
 
 

@@ -237,7 +237,7 @@ def dxf_units(path, unit: Optional[str], args) -> str:
     one DXF cannot say too (km, yd: QA revD, 'x [km]' with --units m made a drawing 1000 x
     too small); a header's px, of no size, may be given one."""
     from .io import DXF_UNITS
-    given = getattr(args, "units_given", getattr(args, "units", None))
+    given = getattr(args, "units", None)     # (None: not given)
     if given not in (None, "none") and unit not in (None, "px") and unit != given:
         raise InputError(f"{path}: --units {given} but its header gives the coordinates in "
                          f"{unit}: drop --units (" + (

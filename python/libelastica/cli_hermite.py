@@ -8,7 +8,7 @@ import numpy as np
 
 from ._quiet import quiet
 from ._text import coordinates
-from .cli_common import EXIT_NOCONV, EXIT_OK, PROG, _finite, _table, tol_option
+from .cli_common import EXIT_NOCONV, EXIT_OK, PROG, _finite, _table, dxf_units, tol_option
 from .io import InputError, curve_to_dict, write_dxf_spline, write_json
 
 
@@ -121,5 +121,5 @@ def cmd_hermite(args) -> int:
             save_picture(pic, args.outputs.path(spec))
     if args.dxf:
         write_dxf_spline(b, args.outputs.path(args.dxf), points=np.array([p0, p1]),
-                         units=args.units)
+                         units=dxf_units(None, None, args))
     return EXIT_OK

@@ -341,9 +341,6 @@ def check_outputs(args) -> None:
     # the DXF's units without a DXF: silently nothing
     if getattr(args, "units", None) is not None and not getattr(args, "dxf", None):
         raise InputError(f"--units {args.units} sets the DXF's units: give --dxf too")
-    if hasattr(args, "units"):   # (None: not given) the default; a header's unit where
-        args.units_given = args.units       # the points' file names one (dxf_units)
-        args.units = "none" if args.units is None else args.units
     if getattr(args, "png", None):
         from .report import have_matplotlib
         if not have_matplotlib():

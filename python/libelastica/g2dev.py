@@ -60,10 +60,10 @@ def refined_deviation(splines, samples: np.ndarray, curve=None, per_span: int = 
         # eighth of its second difference where the distance is a parabola there; PEAK_MARGIN
         # times that must reach the sampled maximum (an end sample: always refined)
         top = d[peak] + PEAK_MARGIN * (2.0 * d[peak] - d[lo] - d[hi]) / 8.0
-        keep = (top >= worst) | (peak == 0) | (peak == len(u) - 1)
-        peak = peak[keep][np.argsort(-d[peak[keep]])][:REFINED_PEAKS]
-        if len(peak):
-            peaks.append((b, u[np.maximum(peak - 1, 0)], u[np.minimum(peak + 1, len(u) - 1)]))
+        keep = np.flatnonzero((top >= worst) | (peak == 0) | (peak == len(u) - 1))
+        keep = keep[np.argsort(-d[peak[keep]])][:REFINED_PEAKS]
+        if len(keep):
+            peaks.append((b, u[lo[keep]], u[hi[keep]]))
     cut = np.cumsum([0] + [len(q[1]) for q in peaks])
     lo, hi = np.concatenate([q[1] for q in peaks]), np.concatenate([q[2] for q in peaks])
 

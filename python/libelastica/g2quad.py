@@ -13,12 +13,11 @@ from typing import Optional, Tuple
 import numpy as np
 
 from ._ffi import DomainError, as_points, as_size, lib
-from ._quiet import say
 from ._values import ValueEquality
 from .affine import (AffinePolyline, EdgeCountError, EndPieces, _curve_samples, _is_curve,
                      affine_end_pieces, affine_polyline, elastica_inflections, g2_bspline, quadratic_joint_curvatures)
 from .g2dev import refined_deviation
-from .g2quad_points import (StrayWarning, _built_locally, _end_curvatures, _local_source,
+from .g2quad_points import (StrayWarning, _built_locally, _say, _end_curvatures, _local_source,
                             _noisy_points_error, _repeated_points, _seam_duck, _stray_warning)
 from .g2ends import (_end_curvature, _held_joints, _hold_joints, _matched_ends, _menger_max,
                      _rel_err, _seam_estimate, _joins, _seam_rounding, _tangent_alone)
@@ -266,21 +265,6 @@ def _left_out(dropped, length: float, n: int, inflection: bool, short: Optional[
             "they stop at the inflection"] if inflection else []) + ([short] if short else [])
     return (f"g2_quadratic: the splines leave out {gone} of the source (length {length:.4g}): "
             + "; ".join(why))
-
-
-def _say(said: Optional[list], plain: bool, warning: Warning) -> None:
-    """g2_quadratic's ``warning``: none from a ``plain`` build (covering_edges' searches:
-    the error names the count), put in ``said`` where its caller collects them (a build in
-    a local frame, _built_locally, said again at g2_quadratic's caller), else warned at
-    g2_quadratic's caller. A flag and a list passed down, not warnings.catch_warnings: that
-    swaps the process's filters and showwarning, so another thread's warnings were caught
-    and said again or dropped (revA: 365 of a thread's 3000 said from g2quad_points)."""
-    if plain:
-        return
-    if said is not None:
-        said.append(warning)
-    else:                   # (1 here, 2 g2_quadratic, 3 its caller)
-        say(warning, stacklevel=3)
 
 
 class CoverageWarning(RuntimeWarning):

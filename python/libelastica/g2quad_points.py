@@ -231,7 +231,7 @@ def _moved(g, R: np.ndarray):
 def _built_locally(build, source, R: np.ndarray, coverage_error, said=None):
     """build(source, collected) (a G2Quadratic of the source moved by -R, its warnings put
     in the list ``collected``) moved back by R; those warnings said again at the caller of
-    g2_quadratic, or put in ``said`` where that caller collects them (g2quad._say), a
+    g2_quadratic, or put in ``said`` where that caller collects them (_say), a
     ``coverage_error``'s result moved back too."""
     collected = []
     try:
@@ -240,11 +240,24 @@ def _built_locally(build, source, R: np.ndarray, coverage_error, said=None):
         exc.result = _moved(exc.result, R)
         raise
     finally:
-        for w in collected:
-            if said is not None:
-                said.append(w)
-            else:           # (1 here, 2 g2_quadratic, 3 its caller)
-                say(w, stacklevel=3)
+        for w in collected:     # (said at g2_quadratic's caller: one level up)
+            _say(said, False, w, 4)
+
+
+def _say(said: Optional[list], plain: bool, warning: Warning, stacklevel: int = 3) -> None:
+    """g2_quadratic's ``warning``: none from a ``plain`` build (covering_edges' searches:
+    the error names the count), put in ``said`` where its caller collects them (a build in
+    a local frame, _built_locally, said again at g2_quadratic's caller), else warned at
+    g2_quadratic's caller (``stacklevel`` for _quiet.say: 3 from g2_quadratic). A flag and
+    a list passed down, not warnings.catch_warnings: that swaps the process's filters and
+    showwarning, so another thread's warnings were caught and said again or dropped (revA:
+    365 of a thread's 3000 said from g2quad_points)."""
+    if plain:
+        return
+    if said is not None:
+        said.append(warning)
+    else:                   # (1 say, 2 here, 3 g2_quadratic, 4 its caller)
+        say(warning, stacklevel=stacklevel)
 
 
 def _end_curvatures(given, is_curve: bool):

@@ -19,7 +19,7 @@ from typing import Any, Dict, Optional, Union
 
 import numpy as np
 
-from ._columns import axis_columns, header_unit, not_a_table, unit_words_joined
+from ._columns import InputError, axis_columns, header_unit, not_a_table, unit_words_joined
 from ._dxf import DXF_UNITS, have_ezdxf, write_dxf_spline  # noqa: F401  (re-exported: io's names)
 
 __all__ = ["InputError", "read_input", "looks_like_json", "read_points", "read_points_unit",
@@ -28,10 +28,6 @@ __all__ = ["InputError", "read_input", "looks_like_json", "read_points", "read_p
            "write_dxf_spline", "have_ezdxf", "DXF_UNITS"]
 
 PathLike = Union[str, Path]
-
-
-class InputError(ValueError):
-    """Bad user input (a file that is missing, malformed, or holds unusable points)."""
 
 
 # a number written with a decimal comma (1,5 or -0,25e3): semicolon-, tab- or space-separated
@@ -562,20 +558,14 @@ def read_points(path: PathLike, min_points: int = 3, data: Optional[bytes] = Non
 
 
 def read_points_unit(path: PathLike, min_points: int = 3, data: Optional[bytes] = None,
-                     thousands: Optional[str] = None) -> tuple:
+                     thousands: Optional[str] = None, lines: Optional[list] = None) -> tuple:
     """(points, unit): :func:`read_points`' points of ``path`` (``min_points``, ``data``,
     ``thousands`` as there) and the unit the header line names the coordinate columns in
     ('mm' for ``x [mm],y [mm]``; DXF_UNITS' spelling where it is one of those: 'um' for
     'µm'), None where it names none (and for .npy). Columns naming two units
-    (``x [mm],y [m]``) raise :class:`InputError` naming both."""
-    return _read_points_unit(path, min_points, data, thousands)
-
-
-def _read_points_unit(path: PathLike, min_points: int = 3, data: Optional[bytes] = None,
-                      thousands: Optional[str] = None, lines: Optional[list] = None) -> tuple:
-    """:func:`read_points_unit`; ``lines``: a list each point's line in the file (from 1:
-    where an editor shows it; for .npy its row, from 1) is appended to, or None (the FreeCAD
-    Fit names a file's point by its line)."""
+    (``x [mm],y [m]``) raise :class:`InputError` naming both. ``lines``: a list each
+    point's line in the file (from 1: where an editor shows it; for .npy its row, from 1)
+    is appended to, or None (the FreeCAD Fit names a file's point by its line)."""
     name = "standard input" if str(path) == "-" else str(path)
     data = read_input(path) if data is None else data
     if data.startswith(_NPY_MAGIC) or (str(path) != "-" and Path(path).suffix.lower() == ".npy"):

@@ -107,17 +107,31 @@ def refine_feet(at, data, t, lo, hi):
     return t, P, d2
 
 
-def nearest_samples(data, samples):
-    """Each point's nearest of ``samples`` (k, 2), its index: argmin of |q|^2 - 2 q . p
-    about the samples' centre (no cancellation at large offsets), one matrix product for
-    1024 points (bounded memory; 4 x faster than the differences' squares summed)."""
+def centred_table(samples):
+    """The squared distances of points from ``samples`` (k, 2) about the samples' centre o
+    (no cancellation at large offsets): a function of points q (m, 2) giving (its (m, k)
+    table |s - o|^2 - 2 (q - o) . (s - o), the points' |q - o|^2), one matrix product
+    (4 x faster than the differences' squares summed); the table plus |q - o|^2 is the
+    squared distance."""
     n = np()
     o = samples.mean(axis=0)
     sm = samples - o
     n2 = n.einsum("ij,ij->i", sm, sm)
+
+    def table(data):
+        q = data - o
+        return n2[None, :] - 2.0 * (q @ sm.T), n.einsum("ij,ij->i", q, q)
+    return table
+
+
+def nearest_samples(data, samples):
+    """Each point's nearest of ``samples`` (k, 2), its index: the argmin of
+    :func:`centred_table`'s, 1024 points at a time (bounded memory)."""
+    n = np()
+    table = centred_table(samples)
     out = n.empty(len(data), dtype=n.intp)
     for a in range(0, len(data), 1024):
-        out[a:a + 1024] = n.argmin(n2[None, :] - 2.0 * ((data[a:a + 1024] - o) @ sm.T), axis=1)
+        out[a:a + 1024] = n.argmin(table(data[a:a + 1024])[0], axis=1)
     return out
 
 
@@ -161,13 +175,11 @@ def curve_feet(curve, data, samples=None):
     k = len(samples)
     rows = max(1, min(1024, (1 << 20) // k))    # bounded (rows, k) tables
     step = L / (k - 1)
-    o = samples.mean(axis=0)
-    sm = samples - o
-    n2 = n.einsum("ij,ij->i", sm, sm)
+    table = centred_table(samples)
     who, at_j = [], []
     for a in range(0, len(data), rows):
-        q = data[a:a + rows] - o
-        d2 = n.maximum(n2[None, :] - 2.0 * (q @ sm.T) + n.einsum("ij,ij->i", q, q)[:, None], 0.0)
+        part, qq = table(data[a:a + rows])
+        d2 = n.maximum(part + qq[:, None], 0.0)
         # the samples within a step of the nearest (squared: no square root of the table),
         # then of those the dips, compared with their neighbours (few: no padded copies)
         near = n.sqrt(d2.min(axis=1)) + step

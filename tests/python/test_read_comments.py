@@ -47,7 +47,7 @@ def test_the_cli_fits_qa20s_commented_stations(capsys, tmp_path):
 def test_each_points_line_in_the_file_is_told(tmp_path, end):
     """The FreeCAD Fit names a file's point by its line (an editor's, from 1): titles, the
     header, comments and blank lines are counted, as every line ending is."""
-    from libelastica.io import _read_points_unit
+    from libelastica.io import read_points_unit
     rows = ["Survey 7", "x;y", ""]
     for i, (x, y) in enumerate(STATIONS):
         rows.append(f"{x:.1f};{y:.1f}")
@@ -55,11 +55,11 @@ def test_each_points_line_in_the_file_is_told(tmp_path, end):
             rows += ["# the second day", ""]
     (tmp_path / "s.csv").write_bytes((end.join(rows) + end).encode())
     lines = []
-    pts = _read_points_unit(tmp_path / "s.csv", 1, None, None, lines)[0]
+    pts = read_points_unit(tmp_path / "s.csv", 1, None, None, lines)[0]
     assert np.array_equal(pts, STATIONS)
     assert lines == [4, 5, 6, 9, 10, 11]
     assert [rows[k - 1] for k in lines] == [f"{x:.1f};{y:.1f}" for x, y in STATIONS]
     np.save(tmp_path / "s.npy", STATIONS)
     lines = []
-    _read_points_unit(tmp_path / "s.npy", 1, None, None, lines)
+    read_points_unit(tmp_path / "s.npy", 1, None, None, lines)
     assert lines == [1, 2, 3, 4, 5, 6]

@@ -117,8 +117,8 @@ def gather_points(sources, csv_file="", samples_per_edge=60, link=None, element=
     if csv_file:
         lines = []
         try:
-            arr, unit = binding_module("io")._read_points_unit(csv_file, 1, None, thousands,
-                                                               lines)
+            arr, unit = binding_module("io").read_points_unit(csv_file, 1, None, thousands,
+                                                              lines)
         except ValueError as exc:
             # the library's way out names its own options (--thousands, read_points'
             # thousands=): here it is the fit's property
