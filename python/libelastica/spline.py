@@ -18,7 +18,7 @@ from ._quiet import quiet, quieted, say
 from ._values import ValueEquality
 from .bspline import smooth_chain_to_bspline
 from .core import SMOOTH_PARAMS, SmoothElastica, arc_lengths, chain_eval, chain_starts
-from .spline_ends import UNITS_MAX, _end, _g2_end_text, _units_problem
+from .spline_ends import _end, _g2_end_text, _units_problem
 
 __all__ = ["DoublesBackError", "ElasticSpline", "LoopWarning", "SeamWarning", "UnstableWarning",
            "holding_tension",
@@ -425,19 +425,6 @@ def _back_step_text(places, n) -> str:
     return said + (f" and {len(places) - 4} more" if len(places) > 4 else "")
 
 
-def _out_of_range(pts, chords) -> str:
-    """What the library's EL_EINVAL means for points that passed the checks above: outside
-    the range its pieces, Hermite elasticae, are solved in (el_hermite_solve's in elastica.h:
-    coordinates up to 1e100, chords from 1e-100 to 1e100; 1e+-200 got the generic "invalid
-    argument (NULL, NaN/inf, ...)", QA); '' when inside it."""
-    big, lo, hi = float(np.abs(pts).max()), float(chords.min()), float(chords.max())
-    if big <= 1e100 and 1e-100 <= lo and hi <= 1e100:
-        return ""
-    return (f"elastic_spline: coordinates up to {big:.3g}, chords from {lo:.3g} to {hi:.3g}: "
-            "outside the range the solver covers (its pieces are Hermite elasticae: "
-            "coordinates up to 1e100, chords from 1e-100 to 1e100); rescale the points")
-
-
 def _largest_text(res, span2) -> tuple:
     """Where tension mode failed at a high tension, the highest tension at which the
     library's search solved these points without loops (el_spline_result's largest,
@@ -624,13 +611,9 @@ def elastic_spline(points, tension: Optional[float] = None, length: Optional[flo
                 setattr(arr[i], k, float(getattr(p, k)))
         opt.initial, opt.ninitial = arr, len(pieces)
     mean_chord = float(chords.sum()) / len(chords)
-    units = _units_problem(mean_chord, opt, closed)
-    if units:   # el_spline_solve's EL_EDOM before any search (spline.c's UNITS); points
-        # beyond the pieces' range are said as the library's EL_EINVAL for them is, but
-        # only where their scale is the cause: points at 1e120 solve, their tension 1 not
-        scale = not 1.0 / UNITS_MAX <= mean_chord <= UNITS_MAX
-        raise DomainError(lib.EL_EDOM, (_out_of_range(pts, chords) if scale else "")
-                          or "elastic_spline: " + units)
+    units = _units_problem(mean_chord, opt, closed, pts, chords)
+    if units:   # el_spline_solve's EL_EDOM before any search (spline.c's UNITS)
+        raise DomainError(lib.EL_EDOM, "elastic_spline: " + units)
     places = back_steps(pts, closed)
     if len(places) >= BACK_STEPS_MANY:   # noise: refused before a solve that cannot succeed
         err = DoublesBackError(lib.EL_EDOM, (
@@ -790,10 +773,6 @@ def elastic_spline(points, tension: Optional[float] = None, length: Optional[flo
             err.g2_met = met
             err.stopped, err.work = bool(res.stopped), int(res.work)
             raise err
-        if st == lib.EL_EINVAL:
-            why = _out_of_range(pts, chords)
-            if why:
-                raise DomainError(lib.EL_EDOM, why)
         check(st, "elastic_spline")   # raises: st is an error
         raise AssertionError(st)
     finally:

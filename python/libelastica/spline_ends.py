@@ -60,12 +60,17 @@ def _g2_end_text(opt, chords) -> str:
 UNITS_MAX = 1e150
 
 
-def _units_problem(S, opt, closed):
-    """What of the mean chord S and the options opt (el_spline_options) the spline's units
-    cannot represent (EL_EDOM before any search), as text; None where all is within."""
+def _units_problem(S, opt, closed, pts, chords):
+    """What of the mean chord S of the points ``pts`` (their ``chords``) and the options opt
+    (el_spline_options) the spline's units cannot represent (EL_EDOM before any search), as
+    text; None where all is within. The points' scale is the mean chord's range, the one
+    bound on it (points at 1e+-149 solve, coordinates and chords far past the pieces'
+    Hermite 1e+-100), named with their chords and coordinates."""
     if not 1.0 / UNITS_MAX <= S <= UNITS_MAX:
-        return (f"the points' mean chord {S:.4g} is outside [1e-150, 1e150], the scales the "
-                "solver represents: scale the points (and tension, curvatures) first")
+        return (f"the points' mean chord {S:.4g} (chords from {chords.min():.3g} to "
+                f"{chords.max():.3g}, coordinates up to {np.abs(pts).max():.3g}) is outside "
+                "[1e-150, 1e150], the scales the solver represents: rescale the points (and "
+                "tension, curvatures)")
     if opt.mode == lib.EL_SPLINE_TENSION and not opt.sigma * S * S <= UNITS_MAX:
         return (f"tension {opt.sigma:.4g} x (mean chord {S:.4g})^2 exceeds 1e150: no batten "
                 "the solver represents is pulled so hard")

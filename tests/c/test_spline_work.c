@@ -208,33 +208,48 @@ static int units_solve(double s, double sigma, double kg, int lmode, el_spline_r
 /* What the spline's units (the mean chord S) cannot represent is refused before any search,
  * EL_EDOM with no work: S outside [1e-150, 1e150], sigma S^2 or a G2 end's |kappa| S above
  * 1e150 (finite but absurd: sigma 1e307, kappa 1e307). Before, each reached the searches
- * (sigma S^2 = 1e307: 13992 evaluations for EL_ENOCONV; S just outside: solved with forces of
- * 1e-300). Just inside the bounds each solves or fails as before (the statuses and work of
+ * (sigma S^2 = 1e307: ~14 000 evaluations for EL_ENOCONV; S just outside: solved with forces
+ * of 1e-300). Just inside the bounds each solves or fails as before (the statuses of
  * e8b1b54): S = 1e150 and 1e-150 solve, by tension and by length; sigma S^2 = 1e150 and
- * |kappa| S = 1e150 (at S = 1 and at S = 1e100) fail as they did, EL_ENOCONV. */
+ * |kappa| S = 1e150 (at S = 1 and at S = 1e100) fail as they did, EL_ENOCONV. The work
+ * asserted is what it must be, not a count of this build's searches: none where refused,
+ * some and within the call's budget (max_steps x max_iter x (16 + 64 / m), a re-evaluation
+ * or two past it) where not, and the same in the solver's units at either scale. */
 START_TEST(units_outside_are_refused_before_any_search)
 {
     const double no = NAN, out = 1.0000001;
-    const struct { double s, sigma, kg; int lmode, st; unsigned long work; } c[] = {
-        {1e150, 0, no, 0, EL_OK, 5},           {1e150 * out, 0, no, 0, EL_EDOM, 0},
-        {1e-150, 0, no, 0, EL_OK, 5},          {1e-150 / out, 0, no, 0, EL_EDOM, 0},
-        {1e150, 0, no, 1, EL_OK, 8},           {1e-150, 0, no, 1, EL_OK, 8},
-        {1e150 * out, 0, no, 1, EL_EDOM, 0},   {1e-150 / out, 0, no, 1, EL_EDOM, 0},
-        {1, 1e150, no, 0, EL_ENOCONV, 13992},  {1, 1e150 * out, no, 0, EL_EDOM, 0},
-        {1, 1e307, no, 0, EL_EDOM, 0},         {1e100, 1e-50 * out, no, 0, EL_EDOM, 0},
-        {1, 0, 1e150, 0, EL_ENOCONV, 12653},   {1, 0, -1e150 * out, 0, EL_EDOM, 0},
-        {1, 0, -1e150, 1, EL_ENOCONV, 468},    {1, 0, 1e150 * out, 1, EL_EDOM, 0},
-        {1, 0, 1e307, 1, EL_EDOM, 0},          {1e100, 0, 1e49, 0, EL_ENOCONV, 12653},
-        {1e100, 0, 1e50 * out, 0, EL_EDOM, 0},
+    const struct { double s, sigma, kg; int lmode, st; } c[] = {
+        {1e150, 0, no, 0, EL_OK},           {1e150 * out, 0, no, 0, EL_EDOM},
+        {1e-150, 0, no, 0, EL_OK},          {1e-150 / out, 0, no, 0, EL_EDOM},
+        {1e150, 0, no, 1, EL_OK},           {1e-150, 0, no, 1, EL_OK},
+        {1e150 * out, 0, no, 1, EL_EDOM},   {1e-150 / out, 0, no, 1, EL_EDOM},
+        {1, 1e150, no, 0, EL_ENOCONV},      {1, 1e150 * out, no, 0, EL_EDOM},
+        {1, 1e307, no, 0, EL_EDOM},         {1e100, 1e-50 * out, no, 0, EL_EDOM},
+        {1, 0, 1e150, 0, EL_ENOCONV},       {1, 0, -1e150 * out, 0, EL_EDOM},
+        {1, 0, -1e150, 1, EL_ENOCONV},      {1, 0, 1e150 * out, 1, EL_EDOM},
+        {1, 0, 1e307, 1, EL_EDOM},          {1e100, 0, 1e49, 0, EL_ENOCONV},
+        {1e100, 0, 1e50 * out, 0, EL_EDOM},
     };
+    el_spline_options d;
+    el_spline_options_defaults(&d);
+    const unsigned long si = (unsigned long)d.max_steps * (unsigned long)d.max_iter;
+    const unsigned long budget = si * 16 + si * 64 / 2;   /* 2 pieces */
     for (size_t i = 0; i < sizeof c / sizeof c[0]; i++) {
         el_spline_result r;
         const int st = units_solve(c[i].s, c[i].sigma, c[i].kg, c[i].lmode, &r);
-        ck_assert_msg(st == c[i].st && r.work == c[i].work, "case %zu: status %d work %lu, expected %d, %lu", i, st,
-                      (unsigned long)r.work, c[i].st, c[i].work);
+        const int ok = st == EL_EDOM ? r.work == 0 : r.work > 0 && r.work <= budget + 8;
+        ck_assert_msg(st == c[i].st && ok, "case %zu: status %d work %lu, expected %d, %s", i, st,
+                      (unsigned long)r.work, c[i].st, c[i].st == EL_EDOM ? "none" : "within the budget");
         if (st == EL_EDOM) ck_assert(r.npieces == 0 && r.pieces == NULL);
         el_spline_result_free(&r);
     }
+    /* |kappa| S = 1e149 at S = 1 and at S = 1e100: one problem in the solver's units */
+    el_spline_result a, b;
+    const int sa = units_solve(1, 0, 1e149, 0, &a), sb = units_solve(1e100, 0, 1e49, 0, &b);
+    ck_assert_msg(sa == sb && a.work == b.work, "status %d / %d, work %lu / %lu", sa, sb,
+                  (unsigned long)a.work, (unsigned long)b.work);
+    el_spline_result_free(&a);
+    el_spline_result_free(&b);
 }
 END_TEST
 

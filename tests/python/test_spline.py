@@ -423,14 +423,18 @@ def test_bad_input_clear_errors(kwargs, exc, text):
 
 @pytest.mark.parametrize("scale", [1e200, 1e-200])
 def test_points_beyond_the_range_name_it(scale):
-    """Points at 1e+-200 (the library's EL_EINVAL) name the range the pieces are solved in,
-    el_hermite_solve's (coordinates up to 1e100, chords 1e-100..1e100), not the generic
-    "invalid argument (NULL, NaN/inf, ...)"."""
+    """Points at 1e+-200 name the bound they are beyond, the solver's units': their mean
+    chord outside [1e-150, 1e150] (spline.c's UNITS), not the pieces' Hermite range
+    'coordinates up to 1e100, chords from 1e-100' it said, which points at 1e+-120 are
+    beyond and solve, nor the generic "invalid argument (NULL, NaN/inf, ...)"."""
     P = np.array([[0, 0], [1, 0.5], [2, 0.3], [3, 1.0]]) * scale
-    with pytest.raises(el.DomainError, match=r"chords from 1e-100 to 1e100") as info:
+    with pytest.raises(el.DomainError, match=r"mean chord .* is outside \[1e-150, 1e150\]") as info:
         el.elastic_spline(P)
-    assert "NULL" not in str(info.value)
-    el.elastic_spline(P / scale * 1e100)       # the range's own end is solved
+    assert "NULL" not in str(info.value) and "1e100" not in str(info.value)
+    S = np.mean(np.hypot(*np.diff(P, axis=0).T))
+    for end in (1e150 * (1 - 1e-15), 1e-150 * (1 + 1e-15)):   # the range's ends: solved
+        assert len(el.elastic_spline(P / S * end).pieces) == 3
+    el.elastic_spline(P / scale * (1e120 if scale > 1 else 1e-120))
 
 
 def test_bspline_tol_below_rounding_is_named():

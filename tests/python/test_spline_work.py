@@ -66,12 +66,12 @@ def test_what_the_units_cannot_represent_is_refused_with_its_cause():
     # el_spline_solve's EL_EDOM before any search (spline.c's UNITS): the mean chord S outside
     # [1e-150, 1e150], tension x S^2 or a G2 end's |curvature| x S above 1e150 (the fuzz's
     # collinear ducks at 1e300, a G2 end of curvature 1.8e308); the message names the cause
-    # (points beyond the pieces' range as for the library's EL_EINVAL there), not the
-    # tension-0 batten sliding off its ducks that EL_EDOM says otherwise
+    # (the points' mean chord, with their chords and coordinates), not the tension-0 batten
+    # sliding off its ducks that EL_EDOM says otherwise
     line = np.array([[0.0, 0.0], [1.0, 2.0], [2.0, 4.0], [3.0, 6.0]])
     g2 = {"tangent": (1.0, 0.2), "curvature": 1e307}
-    cases = [(dict(points=line * 1e300, tension=42.3), "chords from .* rescale the points"),
-             (dict(points=line * 1e-300), "chords from .* rescale the points"),
+    scale = r"mean chord .* \(chords from .*\) is outside \[1e-150, 1e150\].* rescale the points"
+    cases = [(dict(points=line * 1e300, tension=42.3), scale), (dict(points=line * 1e-300), scale),
              (dict(points=line * 1e80, tension=1e-9), r"tension 1e-09 x \(mean chord"),
              (dict(points=line, tension=1e307), "tension"),
              (dict(points=line, length=20.0, end=g2), "end curvature"),
