@@ -124,7 +124,8 @@ def _slide_x1(x: np.ndarray, start, end, residual) -> Optional[np.ndarray]:
     (v_1 = t u + (A/|v_2|) w, u = v_2/|v_2|, det(w, u) = 1), which keeps A_2 = A and so every
     joint G2, to the root of ``residual(kappa, dx, dy)`` of g2_bspline(x, start, end)'s start
     (its curvature and first leg c - P) nearest the polyline's own t (a sign change on 41
-    points over 0.5..1.5 x it, then bisection); None if none. Each trial's start is
+    points over 0.5..1.5 x it, then bisection; a sign change that is no root, atan2's wrap
+    at pi or a pole, passed over: ROOT_SHRINK); None if none. Each trial's start is
     _start_parabola's closed form, the same bits as the spline's (QA25 F6: ~100 splines
     built a call for it before); the spline is built only where the C function decides."""
     v2 = x[3] - x[2]
@@ -154,22 +155,31 @@ def _slide_x1(x: np.ndarray, start, end, residual) -> Optional[np.ndarray]:
     ts = t0 * np.linspace(0.5, 1.5, 41)
     fs = np.array([f(float(t)) for t in ts])
     ok = np.isfinite(fs[:-1]) & np.isfinite(fs[1:]) & (np.sign(fs[:-1]) != np.sign(fs[1:]))
-    if not ok.any():
-        return None
-    i = int(np.nonzero(ok)[0][np.argmin(np.abs(np.nonzero(ok)[0] - 20))])
-    lo, hi, flo = float(ts[i]), float(ts[i + 1]), float(fs[i])
-    for _ in range(60):
-        mid = 0.5 * (lo + hi)
-        fm = f(mid)
-        if not math.isfinite(fm):
-            return None
-        if np.sign(fm) == np.sign(flo):
-            lo, flo = mid, fm
-        else:
-            hi = mid
-    y = x.copy()
-    y[1] = vertex(lo if abs(flo) <= abs(f(hi)) else hi)
-    return y
+    for i in sorted(np.nonzero(ok)[0], key=lambda i: abs(i - 20)):
+        lo, hi, flo = float(ts[i]), float(ts[i + 1]), float(fs[i])
+        for _ in range(60):
+            mid = 0.5 * (lo + hi)
+            fm = f(mid)
+            if not math.isfinite(fm):
+                return None
+            if np.sign(fm) == np.sign(flo):
+                lo, flo = mid, fm
+            else:
+                hi = mid
+        fhi = f(hi)
+        t, fr = (lo, flo) if abs(flo) <= abs(fhi) else (hi, fhi)
+        # a root, not a jump across zero: atan2's wrap (the leg at pi from the tangent, the
+        # piece leaving backwards) or a pole changes sign where |residual| stays large
+        if abs(fr) <= ROOT_SHRINK * max(abs(fs[i]), abs(fs[i + 1])):
+            y = x.copy()
+            y[1] = vertex(t)
+            return y
+    return None
+
+
+# _slide_x1's bisection ends at a root only where its residual fell below ROOT_SHRINK x the
+# bracket's (at a root ~1e-13 of it; at atan2's wrap ~1: the angle pi, the piece backwards)
+ROOT_SHRINK = 1e-6
 
 
 def _slid(x: np.ndarray, s: float, t: float) -> np.ndarray:

@@ -54,11 +54,11 @@ def test_the_qa_s_meets_g1_at_its_inflection(n, monkeypatch):
         assert "(G1, not G2 there)" in g.g2_summary()
         a, b = g.bsplines
         ta, tb = _end_tangent(a, -1), _end_tangent(b, 0)
-        assert abs(ta[0] * tb[1] - ta[1] * tb[0]) < 1e-12
+        assert abs(ta[0] * tb[1] - ta[1] * tb[0]) < 1e-12 and ta @ tb > 0     # (mod 2 pi)
         if not kw:          # the curve's tangent at the inflection, to rounding (samples:
             s_i = el.affine.elastica_inflections(c)[0]      # the nearest sample's)
             t_src = np.array([math.cos(c.angle(s_i)), math.sin(c.angle(s_i))])
-            assert abs(ta[0] * t_src[1] - ta[1] * t_src[0]) < 1e-9
+            assert abs(ta[0] * t_src[1] - ta[1] * t_src[0]) < 1e-9 and ta @ t_src > 0
         assert g.deviation <= plain.deviation * (1 + 1e-9)
         assert g.inflection_tangent_error < 1e-9
         # curvature of opposite signs either side, small against the source's largest
