@@ -4,8 +4,8 @@ starts with the source's curvature (_match_start: x_1 on the line keeping A_2 = 
 tangent too (_hold_start: x_1, x_2 slid, _slid), every joint staying G2; _matched_ends does
 both ends of a piece; the ends where two pieces meet (an inflection) held to the source's
 tangent there, both or neither, so the pieces meet G1 (_joint_end, _held_joints,
-_hold_joints); the source's end curvature and a closed source's seam estimated
-from samples (_end_curvature, _seam_estimate) and the ends' errors (_rel_err, _menger_max).
+_hold_joints; those that do not, _unheld_joints); the source's end curvature and a closed
+source's seam estimated from samples (_end_curvature, _seam_estimate) and the ends' errors (_rel_err, _menger_max).
 """
 from __future__ import annotations
 
@@ -120,7 +120,7 @@ def _match_tangent(x: np.ndarray, start, end, tangent) -> Optional[np.ndarray]:
 
 
 def _slide_x1(x: np.ndarray, start, end, residual) -> Optional[np.ndarray]:
-    """The polyline x (>= 6 vertices) with x_1 slid on the line det(x_2 - x_1, v_2) = A
+    """The polyline x (>= 4 vertices) with x_1 slid on the line det(x_2 - x_1, v_2) = A
     (v_1 = t u + (A/|v_2|) w, u = v_2/|v_2|, det(w, u) = 1), which keeps A_2 = A and so every
     joint G2, to the root of ``residual(kappa, dx, dy)`` of g2_bspline(x, start, end)'s start
     (its curvature and first leg c - P) nearest the polyline's own t (a sign change on 41
@@ -134,7 +134,8 @@ def _slide_x1(x: np.ndarray, start, end, residual) -> Optional[np.ndarray]:
     u = v2 / n2
     w = np.array([u[1], -u[0]])
     t0 = float((x[2] - x[1]) @ u)
-    refused = _end_refused(x, start, end)
+    # (x_1 is x_{m-3} at m = 4, x_{m-2} at 3: the far end's parabola then built each trial)
+    refused = _end_refused(x, start, end) if len(x) >= 6 else None
     P = (float(start[0]), float(start[1]))
     ux, uy, aw0, aw1 = float(u[0]), float(u[1]), float((A / n2) * w[0]), float((A / n2) * w[1])
     x2, x3 = (float(x[2][0]), float(x[2][1])), (float(x[3][0]), float(x[3][1]))
@@ -461,8 +462,11 @@ def _joins(splines) -> Tuple[float, float]:
 # a piece's end at an inflection (where two pieces meet) holds the source's tangent there
 # when both pieces have this many edges or more (x_1 alone, _match_tangent; from 7 on x_1,
 # x_2, _hold_start, as at the source's own ends): a piece's two ends then move vertices
-# that neither end's parabola reads for the other (as _matched_ends')
-JOINT_HOLD_EDGES = 5
+# that neither end's parabola reads for the other (as _matched_ends'), at 4 too: x_1 slid
+# keeping A_2 leaves the far end's parabola (m_3, v_2, A_2) as it was; at 3 edges x_1 is in
+# both end parabolas (A_1, A_2): slid, the piece is no longer G2 inside (a k 0.9 S at 12
+# edges: relative jump 0.105 at m_2) and the far end turns
+JOINT_HOLD_EDGES = 4
 
 
 def _joint_end(x: np.ndarray, start, end, tangent, which: int) -> Optional[np.ndarray]:
@@ -524,7 +528,7 @@ def _held_joints(points: np.ndarray, piece_start, ends: np.ndarray, ends_dir) ->
 
 
 def _hold_joints(built: list, joints: dict, ends: np.ndarray, factor: float,
-                 deviation) -> None:
+                 deviation) -> set:
     """g2_quadratic's pieces ``built`` [(x, spline, deviation, ...)] with the ends of each
     joint j in ``joints`` (_held_joints: piece j-1's end, piece j's start) moved to hold the
     source's tangent there, both or neither: kept where neither piece's ``deviation(p,
@@ -533,8 +537,9 @@ def _hold_joints(built: list, joints: dict, ends: np.ndarray, factor: float,
     then stays as it was). Its own, not the largest of all pieces: beside a bad piece a good
     one grew 6 x (review revC: a noisy stroke at 24 edges, 33.8 -> 209 mm from its samples
     beside one of 280, which held fell to 82.6). In place; joints from left to right, so a
-    piece between two carries both moves, each against the piece as built."""
-    limit = [factor * b[2] for b in built]
+    piece between two carries both moves, each against the piece as built. Returns the joints
+    held."""
+    limit, kept = [factor * b[2] for b in built], set()
     for j in sorted(joints):
         new = []
         for p, lo, hi in ((j - 1, -3, -1), (j, 1, 3)):
@@ -548,3 +553,27 @@ def _hold_joints(built: list, joints: dict, ends: np.ndarray, factor: float,
         if len(new) == 2 and all(d <= limit[p] for p, (_, _, d) in zip((j - 1, j), new)):
             for p, (x, bs, d) in zip((j - 1, j), new):
                 built[p] = (x, bs, d) + tuple(built[p][3:])
+            kept.add(j)
+    return kept
+
+
+def _unheld_joints(splines, piece_start, joints: dict, kept: set, g1: float) -> tuple:
+    """The joints j (piece j-1's end, piece j's start) whose pieces meet more than ``g1``
+    radians apart: ((j, angle, why), ...), why in words: a piece of fewer than
+    JOINT_HOLD_EDGES edges, no end holding the tangent there (_held_joints: none, or the
+    only one the wrong way), or the hold refused for a piece's deviation (_hold_joints)."""
+    out = []
+    for j in range(1, len(splines)):
+        a, b = splines[j - 1], splines[j]
+        ta, tb = a.derivative(a.knots[-1:])[0], b.derivative(b.knots[:1])[0]
+        angle = abs(math.atan2(ta[0] * tb[1] - ta[1] * tb[0], ta @ tb))
+        if angle <= g1:
+            continue
+        edges = [int(piece_start[q + 1] - piece_start[q]) for q in (j - 1, j)]
+        why = (f"a piece of {min(edges)} edges (held from {JOINT_HOLD_EDGES})"
+               if min(edges) < JOINT_HOLD_EDGES else
+               "no end found that holds the tangent there" if j not in joints else
+               "held, a piece would stray farther from the source" if j not in kept else
+               "held, yet apart")
+        out.append((j, angle, why))
+    return tuple(out)

@@ -19,8 +19,8 @@ from .affine import (AffinePolyline, EdgeCountError, EndPieces, _curve_samples, 
 from .g2dev import refined_deviation
 from .g2quad_points import (StrayWarning, _built_locally, _say, _end_curvatures, _local_source,
                             _noisy_points_error, _repeated_points, _seam_duck, _stray_warning)
-from .g2ends import (_end_curvature, _held_joints, _hold_joints, _matched_ends, _menger_max,
-                     _rel_err, _seam_estimate, _joins, _seam_rounding, _tangent_alone)
+from .g2ends import (_end_curvature, _held_joints, _hold_joints, _matched_ends, _menger_max, _rel_err,
+                     _seam_estimate, _joins, _seam_rounding, _tangent_alone, _unheld_joints)
 
 __all__ = ["G2Quadratic", "CoverageError", "CoverageWarning", "EndTangentWarning", "StrayWarning",
            "covering_edges", "g2_quadratic"]
@@ -44,10 +44,8 @@ class G2Quadratic(ValueEquality):
     where that is not done: an end piece of fewer than 7 edges, or a farther spline);
     inflection_tangent_error: the same (radians) at the pieces' ends at inflections (None: no
     such end, or tangents unknown): ~1e-13 where both pieces there hold it (see g2_quadratic:
-    they meet G1), else O(edge) (a piece of fewer than 5 edges, or one that would stray
-    farther from the source);
-    covers_source: False
-    when an end piece next to an inflection was too short to keep, so the splines
+    they meet G1), else O(edge) (unheld_joints); covers_source: False when an end piece
+    next to an inflection was too short to keep, so the splines
     start / stop at that inflection (§4.4), or (fit_ends=False) when the polyline's last
     vertex stops more than half a sample short of the source's end, so the splines stop
     there (the paper's A need not reach it; fit_ends=True lands it or raises); ends_covered: (start, end), which of the two
@@ -59,6 +57,7 @@ class G2Quadratic(ValueEquality):
     (~1e-15 where the ends hold the source's tangent: G1) and the largest jump of their
     signed curvature (1/length; never 0: no G2 quadratic ends with the inflection's curvature
     0, each side ends with its own sign, ~ the source's kappa' x an edge); 0 with one piece.
+    unheld_joints: the joints not G1, ((j, angle (radians), why), ...), j where piece j starts.
     end_curvature_error: at the source's own ends that the splines reach, the largest
     curvature error relative to the source's curvature scale, |k - k_src| / max(|k_src|,
     max |kappa| of the source over that end piece's span) (of point data: k_src from a
@@ -95,6 +94,7 @@ class G2Quadratic(ValueEquality):
     seam_curvature_jump: Optional[float] = None
     inflection_tangent_error: Optional[float] = None
     seam_bound: Optional[Tuple[float, float]] = None
+    unheld_joints: tuple = ()
 
     @property
     def seam_is_g2(self) -> bool:
@@ -116,8 +116,9 @@ class G2Quadratic(ValueEquality):
             return inside
         return (f"{inside}; where the {len(self.bsplines)} pieces meet (inflections): tangents "
                 f"{math.degrees(self.join_angle):.3g} deg apart, curvature jump "
-                f"{self.join_curvature_jump:.3g} ("
-                + ("G1, " if self.join_angle <= SEAM_G2 else "") + "not G2 there)")
+                f"{self.join_curvature_jump:.3g} (" + ("G1, " if self.join_angle <= SEAM_G2 else "")
+                + "not G2 there" + "".join(f"; not G1 where piece {j} starts, {math.degrees(a):.3g} "
+                                           f"deg: {why}" for j, a, why in self.unheld_joints) + ")")
 
     @property
     def npoles(self) -> int:
@@ -419,10 +420,10 @@ def g2_quadratic(curve_or_points, n: int, samples_per_vertex: int = 20, tangents
     inside the ends (7.4 % with the curvature alone).
     Where two pieces meet (an inflection) both ends hold the source's tangent there (point
     data without tangents: the two uniform ends' mean one; g2ends._joint_end: x_1, x_2 slid
-    keeping the uniform end's curvature, x_1 alone at 5 or 6 edges), so the pieces meet G1
+    keeping the uniform end's curvature, x_1 alone at 4 to 6 edges), so the pieces meet G1
     (they were O(edge) apart: 0.0037 deg at 24 edges of an S), unless a piece has fewer
-    than 5 edges or the splines would stray farther from the source (both ends or neither;
-    inflection_tangent_error, join_angle: what is left). Not G2: no G2 quadratic
+    than 4 edges or the splines would stray farther from the source (both ends or neither;
+    unheld_joints names those joints and their angles). Not G2: no G2 quadratic
     ends with the inflection's curvature 0; a smaller end curvature than the uniform end's
     is reached only through a bump in the curvature just inside.
     Far from (0, 0) (survey coordinates) it builds the source moved by a local origin
@@ -674,10 +675,9 @@ def g2_quadratic(curve_or_points, n: int, samples_per_vertex: int = 20, tangents
                     for e in lost:
                         holds[e], gave_up[e] = True, None
         built.append((x, bs, pdev, first, last, holds, gave_up))
-    # the ends at inflections hold the source's tangent there, both pieces or neither (G1
-    # where they meet; QA gui F3: 0.023 deg apart on a fitted S at 24 edges), where the
-    # splines stray no farther from the source for it (g2ends._hold_joints)
-    _hold_joints(built, joints, ends, TANGENT_ALONE_DEV, lambda p, b: _spline_deviation(
+    # the ends at inflections hold the source's tangent there, both pieces or neither (G1; QA gui
+    # F3: 0.023 deg apart), where the splines stray no farther for it (g2ends._hold_joints)
+    kept = _hold_joints(built, joints, ends, TANGENT_ALONE_DEV, lambda p, b: _spline_deviation(
         b, samples, t_ends[p], t_ends[p + 1]))
     for p, (x, bs, pdev, first, last, holds, gave_up) in enumerate(built):
         a, b = ap.piece_start[p], ap.piece_start[p + 1]
@@ -728,8 +728,8 @@ def g2_quadratic(curve_or_points, n: int, samples_per_vertex: int = 20, tangents
                     end_curvature_error=max(kerr) if kerr else None, dropped=dropped,
                     source_end_tangent_error=max(serr) if serr else None,
                     seam_angle=seam and seam[0], seam_curvature_jump=seam and seam[1],
-                    inflection_tangent_error=max(ierr) if ierr else None,
-                    seam_bound=seam_bound)
+                    inflection_tangent_error=max(ierr) if ierr else None, seam_bound=seam_bound,
+                    unheld_joints=_unheld_joints(splines, ap.piece_start, joints, kept, SEAM_G2))
     if seam is not None and closed and not g.seam_is_g2:
         duck = _seam_duck(curve_or_points)
         other = ("another one (np.roll), away from an inflection and with room for 7 edges to "

@@ -51,7 +51,7 @@ def test_reversed_end_tangents_are_not_held(n):
 def test_a_reversed_inflection_tangent_holds_no_joint(n):
     """The tangent at the inflection's sample reversed: no end holds it (both were slid to run
     backwards along it, inflection_tangent_error 180 deg); the joint is left as the plain
-    build's."""
+    build's, and named in unheld_joints."""
     s, P, T = _samples(n)
     i = int(np.argmin(np.abs(s - el.affine.elastica_inflections(QA_S)[0])))
     T[i] *= -1.0
@@ -59,6 +59,8 @@ def test_a_reversed_inflection_tangent_holds_no_joint(n):
     ok, _ = _build(P, n, tangents=_samples(n)[2])
     assert ok.join_angle < 1e-12 and g.join_angle > 1e-6
     assert math.degrees(g.inflection_tangent_error) > 170
+    ((j, angle, why),) = g.unheld_joints
+    assert j == 1 and angle == g.join_angle and why == "no end found that holds the tangent there"
 
 
 def test_match_tangent_finds_no_root_at_the_wrap():

@@ -205,3 +205,56 @@ def test_a_tangent_of_no_direction_is_refused(row, monkeypatch):
     T[i] = 0.0
     with pytest.raises(ValueError, match=rf"tangents\[{i}\] is \(0, 0\)"):
         _build(QA_S.points(s), n, False, monkeypatch, tangents=T)
+
+
+# S elasticae whose inflection leaves a piece of 4 edges (k 0.9 at 24 edges: 20 + 4; k 0.7
+# at 12: 4 + 8, at a survey offset) and of 3 (k 0.9 at 12: 9 + 3)
+S4 = [(el.SmoothElastica(x0=5e5, y0=5e6, phi=-1.8456, mu=(1 / 120.0) ** 2, k=0.9, q=0.2304,
+                         length=320.21), 24),
+      (el.SmoothElastica(x0=5e5, y0=5e6, phi=0.0587, mu=(1 / 120.0) ** 2, k=0.7, q=0.4166,
+                         length=473.9), 12)]
+S3 = el.SmoothElastica(x0=0, y0=0, phi=1.4506, mu=(1 / 120.0) ** 2, k=0.9, q=-0.4902,
+                       length=439.4)
+
+
+def _sources(c, n):
+    s = np.linspace(0, c.length, 20 * n + 1)
+    th = c.angle(s)
+    return ((c, {}), (c.points(s), {"tangents": np.c_[np.cos(th), np.sin(th)]}),
+            (c.points(s), {}))
+
+
+@pytest.mark.parametrize("case", range(len(S4)))
+def test_a_piece_of_4_edges_holds_its_joint(case, monkeypatch):
+    """A piece of 4 edges at an inflection holds the tangent there too (review: 'a 4-edge hold
+    possible'; 0.03 .. 0.12 deg apart before, JOINT_HOLD_EDGES was 5): x_1 slid keeping A_2
+    leaves the far end's parabola (m_3, v_2, A_2) as it was, so the piece's other end, the
+    source's own, keeps its tangent and curvature; the deviation no larger, G2 inside."""
+    c, n = S4[case]
+    for src, kw in _sources(c, n):
+        g = _build(src, n, False, monkeypatch, **kw)
+        plain = _build(src, n, True, monkeypatch, **kw)
+        edges = np.diff(g.polyline.piece_start)
+        assert sorted(edges)[0] == 4 and len(edges) == 2
+        assert plain.join_angle > 1e-5 and g.join_angle < 1e-12 and g.unheld_joints == ()
+        assert "(G1, not G2 there)" in g.g2_summary()
+        assert g.deviation <= plain.deviation * (1 + 1e-6)
+        assert g.curvature_jump < 1e-8
+        p = int(np.argmin(edges))         # the 4-edge piece's far end: the source's end
+        j = -1 if p == len(edges) - 1 else 0
+        a, b = g.bsplines[p], plain.bsplines[p]
+        for f in (lambda x, u: _end_tangent(x, u), lambda x, u: x.curvature(x.knots[[u]])[0]):
+            assert np.allclose(f(a, j), f(b, j), rtol=1e-9, atol=1e-12)
+
+
+def test_a_piece_of_3_edges_names_its_joint_unheld(monkeypatch):
+    """At 3 edges x_1 is read by both ends' parabolas (m_2, A_1): held at both they turn each
+    other, so the joint is left as it was and said, in unheld_joints (which joint, its angle,
+    why) and g2_summary's line: before, only the largest join_angle (0.27 deg) told it."""
+    for src, kw in _sources(S3, 12):
+        g = _build(src, 12, False, monkeypatch, **kw)
+        assert list(np.diff(g.polyline.piece_start)) == [9, 3]
+        ((j, angle, why),) = g.unheld_joints
+        assert j == 1 and angle == g.join_angle > 1e-4 and why.startswith("a piece of 3 edges")
+        assert f"not G1 where piece 1 starts, {math.degrees(angle):.3g} deg: a piece of 3" \
+            in g.g2_summary()
