@@ -13,7 +13,7 @@ import FreeCADGui as Gui
 
 from . import defaults, icon, library_problem
 from .kept import checked_call
-from .links import element_as_followed
+from .links import as_followed, element_as_followed
 from .proxy import InputProblem, ShapeProblem, abort_transaction, save_note
 from .recording import _ref
 from .units import say
@@ -273,7 +273,7 @@ def fit_sources(sources, csv_file="", open_panel=True, wrong=message, **options)
         thousands = src_mod.THOUSANDS[opts.get("Thousands", "auto")]
         checked.append(fit_core.check_fit(
             src_mod.gather_points(sources, csv_file, notes=notes, thousands=thousands,
-                                  element=element_as_followed, names=names), notes,
+                                  element=as_followed(), names=names), notes,
             names=names, **fit.core_options(opts)))
 
     def prepare(obj):
@@ -456,7 +456,7 @@ def spline_sources(sources, open_panel=True, wrong=message, **options):
         and its panel opens, where the designer changes it. A mode or tension given: as given. The
         spline solved is the new feature's first recompute's (``checked``: handed)."""
         pts, plane = src_mod.gather_vertices(sources, spline.DUCKS_NEED, edge_means_object=True,
-                                             curve_ordered=True, element=element_as_followed)
+                                             curve_ordered=True, element=as_followed())
         if "Closed" not in opts:
             opts["Closed"] = spline.ends_at_start(pts)     # the feature follows it after
         degree = opts.get("Degree", spline.BSPLINE_DEGREE)
@@ -506,7 +506,7 @@ def ellblend_sources(sources, open_panel=True, wrong=message, **options):
     checked = []
 
     def check():
-        pts, plane = src_mod.gather_vertices(sources, element=element_as_followed)
+        pts, plane = src_mod.gather_vertices(sources, element=as_followed())
         checked.append(checked_call(ellblend.ellblend_core, pts, plane, opts["Mode"], opts["K"],
                                     opts["D"], opts["Tolerance"], opts["KConvention"],
                                     opts.get("Closed", False)))
@@ -541,7 +541,7 @@ def g2quad_sources(sources, open_panel=True, wrong=message, **options):
     checked = []
 
     def check():
-        edges, plane = src_mod.gather_edges(sources, element=element_as_followed)
+        edges, plane = src_mod.gather_edges(sources, element=as_followed())
         # EdgesProblem (another Edges builds it): the feature made all the same, in error (its
         # Status names the count), with its panel's Edges box to type it in, as FreeCAD's own
         # features are (QA gui F2: refused in a box whose advice had nowhere to go); its first

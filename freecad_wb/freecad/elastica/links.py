@@ -3,6 +3,7 @@ changes (its edge and vertex names shift), and said when that geometry is delete
 from __future__ import annotations
 
 import json
+import math
 
 import FreeCAD as App
 import Part
@@ -23,15 +24,134 @@ def _same_points(p, q):
     return all((a - b).Length <= 1e-7 * (1.0 + a.Length) for a, b in zip(p, q))
 
 
+def read_geometry(sketch):
+    """``sketch.Geometry``: the one place links and sources read it (each read copies every
+    geometry of the sketch: read per vertex, picking 201 vertices of a polyline took 20 s)."""
+    return sketch.Geometry
+
+
+class SketchRead:
+    """A sketch as read once, for the lookups of one gather or one link's slots: its Geometry,
+    construction flags and Shape read once, and its drawn geometries' ends and its shape's
+    vertices each hashed once (_Near), so that naming and following n picked vertices takes
+    O(n), not O(n^2) reads of O(n) each (QA: 201 vertices of a polyline, 20 s). Anything
+    else is the sketch's own (attributes passed through). Read it again after the sketch
+    changes."""
+
+    def __init__(self, sketch):
+        self.sketch = sketch
+        self.Geometry = read_geometry(sketch)
+        self._construction = [sketch.getConstruction(i) for i in range(len(self.Geometry))]
+        self.Shape = sketch.Shape
+        self.Placement = sketch.Placement
+        self._ends, self._vertices, self._listed, self._tags = {}, None, {}, None
+
+    def __getattr__(self, name):
+        return getattr(self.sketch, name)
+
+    def getConstruction(self, i):
+        return self._construction[i]
+
+    def ends(self, placed):
+        """_Near of the drawn geometries' (index, START / END) at their ends, ``placed`` by
+        the sketch's Placement or not."""
+        if placed not in self._ends:
+            plc = self.Placement if placed else None
+            items = []
+            for i, g in enumerate(self.Geometry):
+                if _drawn(self, i):
+                    a, _, b = _ends_and_middle(g.toShape(), plc)
+                    items += [((i, START), a), ((i, END), b)]
+            self._ends[placed] = _Near(items)
+        return self._ends[placed]
+
+    def element(self, name):
+        """The shape's sub-element ``name`` ('Edge3', 'Vertex2'), as Shape.getElement gives
+        it, from the shape's Edges / Vertexes listed once (getElement maps every sub-shape
+        at each call); IndexError where it has none."""
+        kind, n = ("Edges", name[4:]) if name.startswith("Edge") else ("Vertexes", name[6:])
+        if kind not in self._listed:
+            self._listed[kind] = getattr(self.Shape, kind)
+        k = int(n) - 1 if n.isdigit() else -1
+        if not 0 <= k < len(self._listed[kind]):
+            raise IndexError(name)
+        return self._listed[kind][k]
+
+    def index_of_tag(self, tag):
+        """The index of the geometry whose Tag is ``tag``, or None."""
+        if self._tags is None:
+            self._tags = {}
+            for i, g in enumerate(self.Geometry):
+                self._tags.setdefault(g.Tag, i)
+        return self._tags.get(tag)
+
+    def vertices(self):
+        """_Near of the shape's vertices (their index from 0)."""
+        if self._vertices is None:
+            self._vertices = _Near([(k, self.element(f"Vertex{k + 1}").Point)
+                                    for k in range(len(self.Shape.Vertexes))])
+        return self._vertices
+
+
+def geometry_of(sketch):
+    """The Geometry of a SketchRead (read already) or of a sketch (read now)."""
+    return sketch.Geometry if isinstance(sketch, SketchRead) else read_geometry(sketch)
+
+
+def reads():
+    """A function sketch -> its SketchRead, each sketch read once (at its first call): for
+    the slots of one link, or the picked elements of one gather."""
+    done = {}
+
+    def read(sketch):
+        if isinstance(sketch, SketchRead):
+            return sketch
+        key = (sketch.Document.Name, sketch.Name)
+        if key not in done:
+            done[key] = SketchRead(sketch)
+        return done[key]
+    return read
+
+
+def sketch_read(sketch):
+    """``sketch`` as a SketchRead (read once; one already is kept)."""
+    return sketch if isinstance(sketch, SketchRead) else SketchRead(sketch)
+
+
+class _Near:
+    """Points hashed on a grid for _same_points: first(p) is the smallest key among those
+    (key, q) with _same_points([p], [q]), as a scan in key order finds it. The cell is
+    2e-7 (1 + the largest |q|): a q within 1e-7 (1 + |p|) of p is within one cell (|p| <= |q|
+    + that distance), so the 27 cells around p's hold every match."""
+
+    def __init__(self, items):
+        self.cell = 2e-7 * (1.0 + max((q.Length for _, q in items), default=0.0))
+        self.cells = {}
+        for key, q in items:
+            self.cells.setdefault(self._at(q), []).append((key, q))
+
+    def _at(self, q):
+        return tuple(math.floor(c / self.cell) for c in (q.x, q.y, q.z))
+
+    def first(self, p):
+        x, y, z = self._at(p)
+        found = [key for dx in (-1, 0, 1) for dy in (-1, 0, 1) for dz in (-1, 0, 1)
+                 for key, q in self.cells.get((x + dx, y + dy, z + dz), ())
+                 if _same_points([p], [q])]
+        return min(found, default=None)
+
+
 def _drawn(sketch, i):
     """Whether the sketch's geometry i is an edge of its shape (not construction, no point)."""
-    return not sketch.getConstruction(i) and sketch.Geometry[i].TypeId != "Part::GeomPoint"
+    g = geometry_of(sketch)
+    return not sketch.getConstruction(i) and g[i].TypeId != "Part::GeomPoint"
 
 
 def sketch_geo_of_edge(sketch, edge_name):
     """The index of the sketch geometry whose shape is the sketch edge 'EdgeN', or None."""
+    sketch = sketch_read(sketch)
     try:
-        edge = sketch.Shape.getElement(edge_name)
+        edge = sketch.element(edge_name)
     except (Part.OCCError, ValueError, IndexError):
         return None
     at = _ends_and_middle(edge)
@@ -43,6 +163,7 @@ def sketch_edge_name(sketch, i):
     """The name ('EdgeN') of the sketch's edge that draws its geometry i, or None (construction
     geometry, a point): the shape holds the drawn geometry only, sorted into wires (Edge3
     may draw geometry 4)."""
+    sketch = sketch_read(sketch)
     if not _drawn(sketch, i):
         return None
     at = _ends_and_middle(sketch.Geometry[i].toShape(), sketch.Placement)
@@ -60,7 +181,8 @@ EDGE, START, END = 0, 1, 2
 
 def _vertex(sketch, i, pos, plc=None):
     """The point at the START or END of the sketch's geometry i, placed by ``plc``."""
-    return _ends_and_middle(sketch.Geometry[i].toShape(), plc)[0 if pos == START else 2]
+    g = geometry_of(sketch)
+    return _ends_and_middle(g[i].toShape(), plc)[0 if pos == START else 2]
 
 
 def sketch_geo_of_element(sketch, name):
@@ -70,8 +192,9 @@ def sketch_geo_of_element(sketch, name):
     if name.startswith("Edge"):
         i = sketch_geo_of_edge(sketch, name)
         return None if i is None else (i, EDGE)
+    sketch = sketch_read(sketch)
     try:
-        at = [sketch.Shape.getElement(name).Point]
+        at = [sketch.element(name).Point]
     except (Part.OCCError, ValueError, IndexError):
         return None
     return _geo_at(sketch, at[0], sketch.Placement)
@@ -79,10 +202,8 @@ def sketch_geo_of_element(sketch, name):
 
 def _geo_at(sketch, point, plc=None):
     """(geometry index, START / END) of the first drawn geometry with an end at ``point``
-    (placed by ``plc``), or None."""
-    return next(((i, pos) for i in range(len(sketch.Geometry)) if _drawn(sketch, i)
-                 for pos in (START, END)
-                 if _same_points([point], [_vertex(sketch, i, pos, plc)])), None)
+    (placed by ``plc``: None or the sketch's Placement), or None."""
+    return sketch_read(sketch).ends(plc is not None).first(point)
 
 
 def sketch_element_name(sketch, i, pos):
@@ -90,11 +211,11 @@ def sketch_element_name(sketch, i, pos):
     None (construction geometry)."""
     if pos == EDGE:
         return sketch_edge_name(sketch, i)
+    sketch = sketch_read(sketch)
     if not _drawn(sketch, i):
         return None
-    at = [_vertex(sketch, i, pos, sketch.Placement)]
-    return next((f"Vertex{k + 1}" for k, v in enumerate(sketch.Shape.Vertexes)
-                 if _same_points(at, [v.Point])), None)
+    k = sketch.vertices().first(_vertex(sketch, i, pos, sketch.Placement))
+    return None if k is None else f"Vertex{k + 1}"
 
 
 def _element(sketch, i, pos):
@@ -181,13 +302,13 @@ def _locate(sketch, name, tag, saved):
     ``name`` is now; None when none. A vertex whose geometry is gone or construction is
     the drawn geometry ending at its point, if any."""
     if tag is not None:
-        i = next((i for i, g in enumerate(sketch.Geometry) if g.Tag == tag[0]), None)
+        i = sketch_read(sketch).index_of_tag(tag[0])
         if tag[1] != EDGE and (i is None or not _drawn(sketch, i)):
             # a vertex other geometry ends at too (a polyline's joint) outlives its geometry
             return _geo_at(sketch, App.Vector(*tag[2:])) or (None if i is None else (i, tag[1]))
         return None if i is None else (i, tag[1])
     index, pos = saved
-    if 0 <= index < len(sketch.Geometry):
+    if 0 <= index < len(geometry_of(sketch)):
         return index, pos
     return sketch_geo_of_element(sketch, name) if index == FREE else None
 
@@ -198,7 +319,7 @@ def _tag(sketch, at):
     edge, so that geometry replaced at its index is told from geometry deleted (_replaced)."""
     if at is None:
         return None
-    geometry = sketch.Geometry
+    geometry = geometry_of(sketch)
     if at[1] == EDGE:
         after = geometry[at[0] + 1].Tag if at[0] + 1 < len(geometry) else None
         return (geometry[at[0]].Tag, EDGE, geometry[at[0]].TypeId, after, len(geometry))
@@ -226,7 +347,7 @@ def _replaced(sketch, tag, saved):
     moved down)."""
     if len(tag) < 5 or saved[0] < 0:
         return None
-    i, geometry = saved[0], sketch.Geometry
+    i, geometry = saved[0], geometry_of(sketch)
     if len(geometry) != tag[4] or i >= len(geometry) or geometry[i].Tag == tag[0]:
         return None
     after = geometry[i + 1].Tag if i + 1 < len(geometry) else None
@@ -243,8 +364,9 @@ def remember_followed(feature):
     (their saved indices say which): a sketch edited before the first recompute is followed
     too."""
     for prop in feature.Proxy.followed_links:
-        slots = _slots(getattr(feature, prop))
-        tags = [_tag(obj, _locate(obj, name, None, saved)) if _followable(obj, name) else None
+        slots, read = _slots(getattr(feature, prop)), reads()
+        tags = [_tag(read(obj), _locate(read(obj), name, None, saved))
+                if _followable(obj, name) else None
                 for (obj, name), saved in zip(slots, _saved(feature, prop, len(slots)))]
         _set_tags(feature, prop, tags)
 
@@ -259,11 +381,13 @@ def followed_elements(feature, prop):
     tags = _tags(feature, prop, len(slots))
     saved = _saved(feature, prop, len(slots))
     shapes, names, problem = [], [], None
+    read = reads()          # each sketch read once for all the slots (SketchRead)
     for k, (obj, name) in enumerate(slots):
         names.append(name)
         if not _followable(obj, name):
             shapes.append(global_element(obj, name))
             continue
+        obj = read(obj)
         at = _locate(obj, name, tags[k], saved[k])
         if at is None:
             if saved[k][0] == DELETED or tags[k] is not None:
@@ -317,16 +441,25 @@ def followed_edge(feature, prop):
     return followed_elements(feature, prop)[0]
 
 
-def element_as_followed(obj, name):
+def element_as_followed(obj, name, read=None):
     """The global sub-element ``name`` of ``obj`` as a feature linking it reads it
     (followed_elements): a sketch's edge or vertex from its geometry (_element), else
     global_element. A command's check reads its input so, bit for bit as the feature it makes
     (Part.getShape's edge of a placed sketch lies 1 ulp off its geometry transformed): the
-    check's outcome is the feature's (FeatureProxy.handed, fit_core.fit_gathered)."""
-    at = sketch_geo_of_element(obj, name) if _followable(obj, name) else None
-    if at is None or not _drawn(obj, at[0]):
+    check's outcome is the feature's (FeatureProxy.handed, fit_core.fit_gathered).
+    ``read``: reads()'s, each sketch read once over many calls (as_followed)."""
+    sketch = (read or sketch_read)(obj) if _followable(obj, name) else None
+    at = sketch_geo_of_element(sketch, name) if sketch is not None else None
+    if at is None or not _drawn(sketch, at[0]):
         return global_element(obj, name)
-    return _element(obj, *at)
+    return _element(sketch, *at)
+
+
+def as_followed():
+    """element_as_followed for one gather: each sketch read once (SketchRead), however many
+    of its elements are read (picking n vertices read its geometry n times, n^2 work)."""
+    read = reads()
+    return lambda obj, name: element_as_followed(obj, name, read)
 
 
 def followed_reader(feature, prop):
@@ -354,7 +487,9 @@ def relinked(feature, prop, deleted=False):
     slots = _slots(link)
     old = [t[:2] for t in _tags(feature, prop) if t]
     tags, saved = [], []
+    read = reads()
     for obj, name in slots:
+        obj = read(obj) if _followable(obj, name) else obj
         at = sketch_geo_of_element(obj, name) if _followable(obj, name) else None
         kept = at is not None and _tag(obj, at)[:2] in old
         tags.append(_tag(obj, at) if kept else None)

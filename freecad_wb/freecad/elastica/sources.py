@@ -39,8 +39,9 @@ def nothing_read(need, link=None):
 def sketch_points(sketch):
     """The global positions of a sketch's point geometries (0.20 reports every
     sketch point as construction geometry, so all are taken)."""
+    from .links import read_geometry
     plc = sketch.getGlobalPlacement()
-    return [plc.multVec(g.toShape().Point) for g in sketch.Geometry
+    return [plc.multVec(g.toShape().Point) for g in read_geometry(sketch)
             if g.TypeId == "Part::GeomPoint"]
 
 
@@ -139,6 +140,8 @@ def gather_points(sources, csv_file="", samples_per_edge=60, link=None, element=
         raise nothing_read("sketch edges or vertices, a Points object, a wire, or give a CSV "
                            "file", link)
     element = element or global_element
+    from .links import reads
+    read = reads()          # a sketch's geometry read once for its picked vertices' names
     edges, vertices, points = [], [], []
     said = []               # each of vertices' or points' name (point_names)
     plane = None
@@ -183,7 +186,7 @@ def gather_points(sources, csv_file="", samples_per_edge=60, link=None, element=
                 edges.append(e)
             elif s.startswith("Vertex"):
                 vertices.append(e.Point)
-                said.append(_vertex_named(obj, s))
+                said.append(_vertex_named(read(obj) if is_sketch(obj) else obj, s))
             else:
                 raise InputProblem(f"{obj.Label}.{s}: select edges or vertices")
     if len(sketches) > 1:
@@ -221,29 +224,33 @@ def element_name(sketch, i, geometry=None):
     and its kind ('12-Point', '1-Line'), whatever else the sketch holds (lines, arcs,
     construction geometry count too); ``geometry``: sketch.Geometry read already (each read
     copies every geometry: read once per element, a 10 000-point sketch's names took 32 s)."""
-    g = (sketch.Geometry if geometry is None else geometry)[i]
+    from .links import read_geometry
+    g = (read_geometry(sketch) if geometry is None else geometry)[i]
     return f"{i + 1}-{_ELEMENT_KINDS.get(g.TypeId, 'Other')}"
 
 
 def point_names(sketch):
     """The names of a sketch's point geometries (sketch_points' order) as the designer finds
     them in the Sketcher: '<label>'s 12-Point', the Elements panel's (element_name)."""
-    geometry = sketch.Geometry
+    from .links import read_geometry
+    geometry = read_geometry(sketch)
     return [f"{sketch.Label}'s {element_name(sketch, i, geometry)}"
             for i, g in enumerate(geometry) if g.TypeId == "Part::GeomPoint"]
 
 
 def _vertex_named(obj, sub):
     """A picked vertex ``sub`` of ``obj`` named as picked ("Wire's Vertex3"); a sketch's with
-    the element it ends ("Profile's Vertex3, the start of 2-Arc")."""
+    the element it ends ("Profile's Vertex3, the start of 2-Arc"); ``obj``: a sketch read once
+    (links.SketchRead) where many of its vertices are named."""
     said = f"{obj.Label}'s {sub}"
     if not is_sketch(obj):
         return said
-    from .links import END, START, sketch_geo_of_element
+    from .links import END, START, geometry_of, sketch_geo_of_element
     at = sketch_geo_of_element(obj, sub)
     if at is None or at[1] not in (START, END):
         return said
-    return f"{said}, the {'start' if at[1] == START else 'end'} of {element_name(obj, at[0])}"
+    return (f"{said}, the {'start' if at[1] == START else 'end'} of "
+            f"{element_name(obj, at[0], geometry_of(obj))}")
 
 
 def _is_line(e):
