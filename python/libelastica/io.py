@@ -66,15 +66,34 @@ def _uncommented(line: str) -> str:
 
 
 def _split_fields(lines, delim: Optional[str], name: str) -> list:
-    """Each line's fields: by csv's rules at delim, else at whitespace. csv's own errors
-    (a field past its size limit: no point file's) as InputError naming the line."""
+    """Each record's (line number, fields), numbered from 1: by csv's rules at delim (a
+    quoted field holding a line end spans lines, counted as csv's line_num counts them:
+    the record is numbered by its first line), else each line's at whitespace. csv's own
+    errors (a field past its size limit: no point file's) as InputError naming the line."""
     if not delim:
-        return [line.split() for line in lines]
+        return [(k, line.split()) for k, line in enumerate(lines, start=1)]
     reader = csv.reader(lines, delimiter=delim, skipinitialspace=delim == " ")
+    out, read = [], 0
     try:
-        return list(reader)
+        for fields in reader:
+            out.append((read + 1, fields))
+            read = reader.line_num
     except csv.Error as exc:
         raise InputError(f"{name}: line {reader.line_num}: {exc}") from None
+    return out
+
+
+# A line ends where a text editor ends it: at \n, \r\n or \r alone (str.splitlines also ends
+# one at \f, \v, \x1c-\x1e, \x85, U+2028 and U+2029, so every line after such a character
+# was named one too far on: "line 19 of scan.csv" for an editor's line 18)
+_LINE_END = re.compile(r"\r\n|\r|\n")
+
+
+def _text_lines(text: str) -> list:
+    """``text``'s lines as an editor numbers them (_LINE_END), without their ends; a last
+    line end opens no line (as str.splitlines)."""
+    lines = _LINE_END.split(text)
+    return lines[:-1] if lines and lines[-1] == "" else lines
 
 
 def _parse_text(text: str, name: str, thousands: Optional[str] = None,
@@ -95,7 +114,7 @@ def _parse_text(text: str, name: str, thousands: Optional[str] = None,
     ``line_numbers``: a list each point's line in the text (from 1) is appended to, or None."""
     rows = []       # (line number, fields)
     header = None
-    lines = [_uncommented(ln) for ln in text.splitlines()]     # (a line number per line)
+    lines = [_uncommented(ln) for ln in _text_lines(text)]     # (a line number per line)
     data_lines = [ln for ln in lines if ln.strip()]
     sample = "\n".join(data_lines[:20])
     delim = None
@@ -114,7 +133,7 @@ def _parse_text(text: str, name: str, thousands: Optional[str] = None,
     # that writes decimal commas with ',' between the columns); lines end at any line end
     # (CR alone: classic Mac and some instruments' exports)
     split = []
-    for lineno, fields in enumerate(_split_fields(lines, delim, name), start=1):
+    for lineno, fields in _split_fields(lines, delim, name):
         fields = [f for f in map(str.strip, fields) if f]
         if fields and not fields[0].startswith("#"):
             split.append((lineno, fields))
