@@ -20,7 +20,7 @@ from .links import followed_reader
 from .proxy import (FeatureProxy, InputProblem, ShapeProblem, add_geometry_index, add_link,
                     add_property, new_feature, read_only, set_said, source_list)
 from .sources import gather_edges, sample_chain
-from .units import length_mark
+from .units import length_mark, say
 
 SAMPLES_PER_VERTEX = 20     # seed 002 §4.2: |p| ~ 20 |x|
 # a closed wire's seam (and where its edges meet) is smooth below this angle between its
@@ -102,7 +102,7 @@ def g2quad_core(edges, plane=None, nedges=24):
                                "curve without it"))
     corner = closed and _angle(own[1][0], own[1][-1]) > SEAM_SMOOTH
     return {"result": g, "placement": plane, "closed": closed, "corner": corner,
-            "seam_curvatures": own[2]}
+            "seam_curvatures": own[2], "stray": stray_status(g, own[3])}
 
 
 class EdgesProblem(ShapeProblem):
@@ -277,11 +277,18 @@ def _g2quad(edges, plane, n, samples=None, closed=False):
                 xy, tan, kseam = _closed(edges, pts, xy, tan, plane)
         else:
             xy, tan, kseam = samples
-        with warnings.catch_warnings():   # g2quad_core says what is left out
+        with warnings.catch_warnings(record=True) as said:   # g2quad_core says what is left out
             warnings.simplefilter("ignore", el().CoverageWarning)
             # (an end tangent not held: its figure is SourceEndTangentError's)
             warnings.simplefilter("ignore", el().EndTangentWarning)
+            warnings.simplefilter("always", el().StrayWarning)
             g = el().g2_quadratic(xy, n, tangents=tan, partial=True, end_curvatures=kseam)
+        stray = None
+        for w in said:      # the StrayWarning said in the Status (stray_status), others again
+            if isinstance(w.message, el().StrayWarning):
+                stray = w.message
+            else:
+                warnings.warn_explicit(w.message, w.category, w.filename, w.lineno)
     except InputProblem:
         raise
     except el().DomainError as exc:
@@ -293,7 +300,22 @@ def _g2quad(edges, plane, n, samples=None, closed=False):
                            "throughout") from None
     except (ValueError, ArithmeticError, RuntimeError) as exc:
         raise InputProblem(f"G2 quadratic B-spline failed: {exc}") from None
-    return g, plane, (xy, tan, kseam)
+    return g, plane, (xy, tan, kseam, stray)
+
+
+def stray_status(g, stray):
+    """The Status of splines the library's StrayWarning ``stray`` says stray from the
+    source's samples (g2quad_points._stray_warning: more than STRAY_EDGE x the mean edge),
+    in one line and in the workbench's terms (the library's names fit=True and el.fit), as
+    the Fit's warnings are said; None without one."""
+    if stray is None:
+        return None
+    pieces = len(g.bsplines)
+    return (f"ok; the B-splines stray {length_mark(g.deviation)} from the source, "
+            f"{g.deviation / stray.edge:.3g} x the mean edge ({length_mark(stray.edge)}): "
+            f"piece {stray.piece + 1} of {pieces} strays {length_mark(stray.deviation)} from its "
+            "own stretch, its polyline following the source's wiggles (noise?), not its curve; "
+            "fit the source first (Fit elastica) and build from the fit: more Edges do not help")
 
 
 def _joins(edges, plane):
@@ -394,7 +416,16 @@ class G2QuadProxy(FeatureProxy):
         obj.Polyline = to_3d(plc, g.polyline.points)
         obj.Plane = plc
         # g2quad_core refuses what leaves the source out; a closed source: its seam said
-        set_said(obj, "Status", seam_status(g, r.get("corner")) if r.get("closed") else "ok")
+        status = seam_status(g, r.get("corner")) if r.get("closed") else "ok"
+        stray = r.get("stray")
+        if stray:
+            # said in the report view once per change, not per recompute (as the Fit's
+            # warnings are)
+            if not obj.Status.startswith(say(stray)):
+                App.Console.PrintWarning(f"Elastica {obj.Label}: {say(stray)[4:]}\n")
+            # (a closed source's seam after it)
+            status = stray + (f"; {status[4:]}" if status != "ok" else "")
+        set_said(obj, "Status", status)
 
 
 def seam_status(g, corner=False):
@@ -423,4 +454,5 @@ def make(doc, sources=(), **props):
                        Source=source_list(sources), **props)
 
 
-__all__ = ["EdgesProblem", "G2QuadProxy", "g2quad_core", "join_words", "make", "seam_status"]
+__all__ = ["EdgesProblem", "G2QuadProxy", "g2quad_core", "join_words", "make", "seam_status",
+           "stray_status"]
