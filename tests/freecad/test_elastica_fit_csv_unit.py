@@ -67,3 +67,64 @@ class FitCsvUnitTest(S.DocTest):
         note = [s for s in w.said if "px" in s]
         self.assertEqual(note, [f"Elastica {f.Label}: picture.csv's header names its "
                                 "coordinates in px, which is no length: read as mm\n"], w.said)
+
+
+class FitCsvUnitSaidTest(S.DocTest):
+    """The conversion is said: '; scan.csv read in m, converted to mm' in the Status (one
+    line), once in the report view per change of the unit; and a document saved before the
+    unit was read (CsvUnit '?', its DataPoints the file's numbers as mm) is told once that
+    its fit changed size at this recompute."""
+    doc_name = "ElasticaFitCsvUnitSaid"
+
+    def _fit(self, unit):
+        xy, _ = S.keyline_xy(30)
+        path = FitCsvUnitTest._file(self, f"scan_{unit}.csv", unit, xy)
+        with _Warnings() as w:
+            said = []
+            saved, App.Console.PrintMessage = App.Console.PrintMessage, said.append
+            try:
+                f = Fi.make(self.doc, [], csv_file=path, Model="smooth")
+                self.doc.recompute()
+                f.touch()
+                self.doc.recompute()
+            finally:
+                App.Console.PrintMessage = saved
+        return f, said, w.said
+
+    def test_the_conversion_is_said_in_the_status_and_once_in_the_report(self):
+        for unit in ("m", "in", "um"):
+            with self.subTest(unit=unit):
+                f, said, warned = self._fit(unit)
+                self.assertEqual(f.Status, f"converged; scan_{unit}.csv read in {unit}, "
+                                           "converted to mm")
+                self.assertEqual([t for t in said if "converted" in t],
+                                 [f"Elastica {f.Label}: scan_{unit}.csv read in {unit}, "
+                                  "converted to mm\n"], said)
+                self.assertFalse([t for t in warned if "converted" in t], warned)
+        f, said, _ = self._fit(None)
+        self.assertEqual(f.Status, "converged")
+        self.assertFalse([t for t in said if "converted" in t], said)
+
+    def test_a_document_saved_before_is_told_its_fit_changed_once(self):
+        f, _, _ = self._fit("m")
+        # as a document saved before c48294f holds it: the file's numbers read as mm
+        f.CsvUnit = "?"
+        f.DataPoints = [p * 1e-3 for p in f.DataPoints]
+        with _Warnings() as w:
+            f.touch()
+            self.doc.recompute()
+            f.touch()
+            self.doc.recompute()
+        said = [t for t in w.said if "saved before" in t]
+        self.assertEqual(said, [f"Elastica {f.Label}: this document, saved before a points "
+                                "file's header unit was read, fitted scan_m.csv's numbers as "
+                                "mm; its header names m: scan_m.csv read in m, converted to "
+                                "mm now, so the fit is 1000 x the size it was\n"], w.said)
+        self.assertEqual(f.CsvUnit, "m")
+        self.assertTrue(f.Status.endswith("; scan_m.csv read in m, converted to mm"), f.Status)
+        # a document saved after, or one whose fit was of the mm points: nothing said
+        f.CsvUnit = "?"
+        with _Warnings() as w:
+            f.touch()
+            self.doc.recompute()
+        self.assertFalse([t for t in w.said if "saved before" in t], w.said)

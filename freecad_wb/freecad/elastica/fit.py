@@ -45,6 +45,12 @@ class FitProxy(FeatureProxy):
         if "CsvStamp" not in obj.PropertiesList:     # hidden output: setting it touches nothing
             obj.addProperty("App::PropertyString", "CsvStamp", "Input", "The CSV file's "
                             "modification time (ns) and size when it was last read", 4 | 8)
+        if "CsvUnit" not in obj.PropertiesList:
+            obj.addProperty("App::PropertyString", "CsvUnit", "Input", "The unit the CSV "
+                            "file's header named when it was last read ('' none; '?' not "
+                            "known: a document saved before it, which read every file as mm)",
+                            4 | 8)
+            obj.CsvUnit = "?" if getattr(self, "_restoring", False) else ""
         add_enum(obj, "Thousands", "Input",
                  "How CsvFile groups thousands, as the command line's --thousands: auto = "
                  "what the file shows (';' and tab separated files of decimal-comma locales: "
@@ -170,10 +176,10 @@ class FitProxy(FeatureProxy):
         # renames Source: read it after; a CSV file is read instead of Source, not its geometry
         element = None if obj.CsvFile else followed_reader(obj, "Source")
         stamp = csv_stamp(obj.CsvFile) if obj.CsvFile else ""   # before it is read
-        notes, names = [], []     # (names: each point's in the warnings, the Sketcher's)
+        notes, names, unit = [], [], []   # (names: each point's in the warnings, the Sketcher's)
         gathered = gather_points(obj.Source, obj.CsvFile, obj.SamplesPerEdge, link="Source",
                                  element=element, notes=notes,
-                                 thousands=THOUSANDS[obj.Thousands], names=names)
+                                 thousands=THOUSANDS[obj.Thousands], names=names, unit=unit)
         edges = {}
         for key, prop in (("start", "StartTangent"), ("end", "EndTangent")):
             edge = followed_edge(obj, prop)
@@ -184,6 +190,7 @@ class FitProxy(FeatureProxy):
         checked, self.checked = getattr(self, "checked", None), None
         r = fit_gathered(gathered, notes, checked, names=names, **core_options(obj), **edges)
         r["csv_stamp"] = stamp
+        r["csv_unit"] = unit[0] if unit else (None, 1.0)
         return r
 
     def read_links(self, obj):
@@ -201,7 +208,35 @@ class FitProxy(FeatureProxy):
             bool(obj.CsvFile) and "CsvStamp" in obj.PropertiesList and
             csv_stamp(obj.CsvFile) != obj.CsvStamp)
 
+    def _said_unit(self, obj, r, before):
+        """The Status's words for a CSV file read in the unit its header names ('; scan.csv
+        read in m, converted to mm'; '' for mm, none or px: its note), said in the report
+        view once per change of that unit; and once, where a document saved before the unit
+        was read (CsvUnit '?') fitted the file's numbers as mm (its DataPoints ``before``
+        that size), that its fit changed."""
+        unit, mm = r["csv_unit"]
+        old, now = obj.CsvUnit, unit or ""
+        if old != now:
+            obj.CsvUnit = now
+        if not obj.CsvFile or mm is None or mm == 1.0:
+            return ""
+        name = os.path.basename(obj.CsvFile)
+        said = f"{name} read in {unit}, converted to mm"
+        if old == "?" and before and len(before) == len(obj.DataPoints):
+            size = lambda pts: max((p - pts[0]).Length for p in pts)  # noqa: E731
+            ratio = size(obj.DataPoints) / size(before) if size(before) > 0 else 0.0
+            if abs(ratio / mm - 1.0) < 1e-6:
+                App.Console.PrintWarning(
+                    f"Elastica {obj.Label}: this document, saved before a points file's "
+                    f"header unit was read, fitted {name}'s numbers as mm; its header names "
+                    f"{unit}: {said} now, so the fit is {mm:g} x the size it was\n")
+                return "; " + said
+        if old not in (now, "?"):
+            App.Console.PrintMessage(f"Elastica {obj.Label}: {said}\n")
+        return "; " + said
+
     def apply(self, obj, r):
+        before = list(obj.DataPoints)    # (a document of before CsvUnit: _said_unit)
         plc = r["placement"]
         set_shape(obj, part_bspline(r["bspline"], plc).toShape())
         obj.Rms = r["rms"]
@@ -224,7 +259,7 @@ class FitProxy(FeatureProxy):
         if old != r["csv_stamp"]:
             obj.CsvStamp = r["csv_stamp"]
         # lengths marked (units.exact_mark), said again when a panel opens (proxy.said)
-        set_said(obj, "Status", r["status"] or "ok")
+        set_said(obj, "Status", (r["status"] or "ok") + self._said_unit(obj, r, before))
         obj.FreeRms = r["free_rms"]
         warnings = r["warnings"]
         if say(warnings) != list(obj.Warnings):

@@ -98,7 +98,7 @@ def file_unit_mm(unit):
 
 
 def gather_points(sources, csv_file="", samples_per_edge=60, link=None, element=None,
-                  notes=None, thousands=None, names=None):
+                  notes=None, thousands=None, names=None, unit=None):
     """Points of a fit's input, in 3D, with what is known about them; ``link``: the
     feature's property the sources come from (None: a selection; see nothing_read);
     ``element``: the function (obj, name) that reads a picked sub-element (global_element;
@@ -113,18 +113,23 @@ def gather_points(sources, csv_file="", samples_per_edge=60, link=None, element=
     ordered: True (in curve order), False (none: curve_order's) or None (a file's order,
     which may be no curve's: file_order), closed: bool). A CSV file's points are read in
     the unit its header names (``x [m],y [m]``: file_unit_mm), converted to mm; a unit that
-    is no length (px) reads as mm, said in ``notes``."""
+    is no length (px) reads as mm, said in ``notes``; ``unit``: a list (header unit or None,
+    mm per unit or None) is appended to, for a CSV file."""
+    said_unit = unit
     el()
     if csv_file:
         lines = []
         try:
-            arr, unit = binding_module("io").read_points_unit(csv_file, 1, None, thousands,
-                                                              lines)
+            arr, header = binding_module("io").read_points_unit(csv_file, 1, None, thousands,
+                                                                lines)
         except ValueError as exc:
             # the library's way out names its own options (--thousands, read_points'
             # thousands=): here it is the fit's property
             raise InputProblem(_CLI_THOUSANDS.sub(THOUSANDS_HINT, str(exc))) from None
-        mm = file_unit_mm(unit)
+        mm = file_unit_mm(header)
+        if said_unit is not None:
+            said_unit.append((header, mm))
+        unit = header
         if mm is None:
             mm = 1.0
             if notes is not None:
