@@ -23,6 +23,6 @@ def test_a_bad_rows_line_is_an_editors(head, line):
 def test_each_points_line():
     lines = []
     text = '# a\fb\n"t\nu",x,y\nP1,1,2\n"P\n2",3,4\r\nP3,5,7\rP4,6,9\n'
-    arr, unit = io._read_points_unit("scan.csv", 3, text.encode(), None, lines)
+    arr, unit = io.read_points_unit("scan.csv", 3, text.encode(), None, lines)
     assert arr.tolist() == [[1, 2], [3, 4], [5, 7], [6, 9]]
     assert lines == [4, 5, 7, 8]      # the quoted 'P\n2' named by its first line
