@@ -224,7 +224,7 @@ check-python-sys: lib
 check-python-path: lib
 	@if [ "$$(command -v $(PYTHON))" != "$(SYSPYTHON)" ]; then $(call pytest-run,$(PYTHON),path,-m "not c_numerics"); fi
 
-# FreeCAD's tests (one freecadcmd after another), its GUI smoke (a HOME of its own:
+# FreeCAD's tests (in FC_GROUPS freecadcmd processes, one after another: freecad.mk), its GUI smoke (a HOME of its own:
 # freecad.mk) and the addon check are jobs of make's -j: the smoke runs beside the tests
 # where a job slot is free, never as a process beyond CHECK_JOBS (the tests and the smoke
 # have wall-clock limits: started as a third process beside them at load 15, both ran out).
@@ -236,7 +236,7 @@ check-freecad: lib
 # cores) at a time, each stage's output printed whole when it ends (-Otarget). It is CPU-bound
 # (~39 CPU-min, 20 min on 2 cores at 4b4c3af: as long as the cores are kept busy, the order changes little), so
 # the longest single processes start first: the pytest run under FreeCAD's Python (~6 CPU-min),
-# FreeCAD's tests (~3.5 min, one freecadcmd after another; its GUI smoke, ~3 min, beside them
+# FreeCAD's tests (~3.5 min, FC_GROUPS freecadcmd processes one after another; its GUI smoke, ~3 min, beside them
 # when a slot is free), then the other pytest run, and the ~100 short C test runs fill the
 # cores after them, so that no long stage runs alone at the end (FreeCAD's chain, once listed
 # after both pytest runs, started ~8 min in and ran 6 min, tests then smoke). The fuzz slice

@@ -1,7 +1,8 @@
 # FreeCAD workbench tests, run by the top-level `make check-freecad`:
 #   make -f tests/freecad/freecad.mk BUILD=build
-# - every tests/freecad/test_*.py through `freecadcmd -t <module>` (its exit code and
-#   its unittest summary are both checked: freecadcmd alone exits 0 on a failing script);
+# - every tests/freecad/test_*.py as `freecadcmd -t <module>` runs it, in FC_GROUPS processes
+#   (tests/freecad/fc_group.py; each module's unittest summary in its own
+#   log is checked, and the group's exit code: freecadcmd alone exits 0 on a failing script);
 # - the GUI smoke test (tests/freecad/gui_smoke.py) in `freecad` under `xvfb-run -a`,
 #   on the demo document examples/demo.py makes headless first ($(BUILD)/freecad/demo/);
 #   it keeps its screenshots ($(BUILD)/freecad/gui_*.png) and a result file checked here.
@@ -47,14 +48,33 @@ fc-home:
 fc-gui-home:
 	$(call fresh-home,$(GUIHOME))
 
+# The modules run in FC_GROUPS freecadcmd processes (fc_group.py: modules i, i + FC_GROUPS, ...),
+# not one each: a FreeCAD start-up with the workbench imported costs ~1 s of CPU, 73 times
+# (the first nine modules: 27.9 CPU-s one process each, 20.1 in one). Each module keeps its
+# log ($(FCDIR)/<module>.log, checked as before: its unittest summary), its documents (every
+# document closed between modules) and its hang guard (TIMEOUT s: the process ends with the
+# module's traceback in its log); GROUP_TIMEOUT stops a group that hangs between modules.
+FC_GROUPS ?= 4
+GROUP_TIMEOUT ?= 1500
 fc-tests: fc-home
-	@set -e; for m in $(FC_TESTS); do \
-	  echo "== freecadcmd -t $$m"; \
-	  rc=0; env $(FC_ENV) timeout $(TIMEOUT) freecadcmd -t $$m > $(FCDIR)/$$m.log 2>&1 || rc=$$?; \
-	  if [ $$rc -ne 0 ] || ! grep -q '^OK' $(FCDIR)/$$m.log || ! grep -Eq '^Ran [1-9][0-9]* test' $(FCDIR)/$$m.log; then \
-	    sed -n '/^=\{10,\}/,$$p' $(FCDIR)/$$m.log | tail -n 80; \
-	    echo "FAILED: freecadcmd -t $$m (exit $$rc, log $(FCDIR)/$$m.log)"; exit 1; fi; \
-	  grep -E '^Ran [0-9]+ test' $(FCDIR)/$$m.log; \
+	@set -e; mods="$(FC_TESTS)"; n=$$(echo $$mods | wc -w); \
+	for g in $$(seq 0 $$(($(FC_GROUPS) - 1))); do \
+	  grp=$$(echo $$mods | tr ' ' '\n' | awk -v g=$$g -v n=$(FC_GROUPS) 'NR % n == g' | tr '\n' ' '); \
+	  [ -n "$$grp" ] || continue; \
+	  for m in $$grp; do rm -f $(FCDIR)/$$m.log; done; \
+	  echo "== freecadcmd tests/freecad/fc_group.py: group $$((g + 1)) of $(FC_GROUPS), $$(echo $$grp | wc -w) of $$n modules"; \
+	  rc=0; env $(FC_ENV) FC_GROUP="$$grp" FC_GROUP_LOGS=$(CURDIR)/$(FCDIR) FC_MODULE_TIMEOUT=$(TIMEOUT) \
+	    timeout $(GROUP_TIMEOUT) freecadcmd $(CURDIR)/tests/freecad/fc_group.py > $(FCDIR)/group-$$g.log 2>&1 || rc=$$?; \
+	  for m in $$grp; do log=$(FCDIR)/$$m.log; echo "== freecadcmd -t $$m"; \
+	    if [ ! -f $$log ]; then tail -n 30 $(FCDIR)/group-$$g.log; \
+	      echo "FAILED: freecadcmd -t $$m not run: its group ended before it (exit $$rc, log $(FCDIR)/group-$$g.log)"; exit 1; fi; \
+	    if ! grep -q '^OK' $$log || ! grep -Eq '^Ran [1-9][0-9]* test' $$log; then \
+	      if grep -q '^=\{10,\}' $$log; then sed -n '/^=\{10,\}/,$$p' $$log | tail -n 80; else tail -n 80 $$log; fi; \
+	      echo "FAILED: freecadcmd -t $$m (group exit $$rc, log $$log)"; exit 1; fi; \
+	    grep -E '^Ran [0-9]+ test' $$log; \
+	  done; \
+	  if [ $$rc -ne 0 ]; then tail -n 30 $(FCDIR)/group-$$g.log; \
+	    echo "FAILED: freecadcmd tests/freecad/fc_group.py group $$((g + 1)) (exit $$rc, log $(FCDIR)/group-$$g.log)"; exit 1; fi; \
 	done
 
 # an Addon Manager install: the repository itself in Mod/ (its package.xml puts freecad_wb/
