@@ -75,8 +75,9 @@ lib: $(BUILD)/libelastica.so $(BUILD)/libelastica.a $(BUILD)/_elastica_abi.py
 # python/libelastica/_cdef.py), beside the library: the binding loads them instead of
 # parsing the header at every start (~40 ms and pycparser's import). Debian's cffi 1.15
 # and PyPI's 2.0 write the same bytes, and either Python loads the other's.
-$(BUILD)/_elastica_abi.py: include/elastica.h python/libelastica/_cdef.py | $(BUILD)/.deps-ok
-	$(PYTHON) python/libelastica/_cdef.py include/elastica.h $@
+# With them the binding's own entry (libelastica/binding.h, not public).
+$(BUILD)/_elastica_abi.py: include/elastica.h libelastica/binding.h python/libelastica/_cdef.py | $(BUILD)/.deps-ok
+	$(PYTHON) python/libelastica/_cdef.py include/elastica.h $@ libelastica/binding.h
 
 # EL_ABI_DIGEST, the CRC-32 of the header's declarations (the digest above), which
 # el_abi_digest returns (libelastica/abi.c): the binding and C programs (elastica_abi.h

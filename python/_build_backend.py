@@ -162,13 +162,15 @@ def _build_library(outdir: Path) -> Path:
     return so
 
 
-def _abi_module(header: Path):
-    """The header's declarations pre-parsed (libelastica/_cdef.py) by this interpreter's
-    cffi, or None when it has none. Run with -E: pip's build isolation hides the
-    interpreter's site-packages (through PYTHONPATH), where cffi, a dependency, is."""
+def _abi_module(header: Path, internal: Path):
+    """The header's declarations and the internal header's (binding.h) pre-parsed
+    (libelastica/_cdef.py) by this interpreter's cffi, or None when it has none. Run with
+    -E: pip's build isolation hides the interpreter's site-packages (through PYTHONPATH),
+    where cffi, a dependency, is."""
     with tempfile.TemporaryDirectory(prefix="libelastica-abi-") as tmp:
         out = Path(tmp) / ABI_FILE
-        r = subprocess.run([sys.executable, "-E", str(HERE / PKG / "_cdef.py"), str(header), str(out)],
+        r = subprocess.run([sys.executable, "-E", str(HERE / PKG / "_cdef.py"), str(header), str(out),
+                            str(internal)],
                            capture_output=True, text=True)
         return out.read_bytes() if r.returncode == 0 else None
 
@@ -208,7 +210,7 @@ def _package_files() -> dict:
     files = {}
     for p in sorted((HERE / PKG).rglob("*")):
         if p.is_file() and "__pycache__" not in p.parts and p.suffix not in (".pyc", ".so"):
-            if p.name in ("elastica.h", ABI_FILE):
+            if p.name in ("elastica.h", "binding.h", ABI_FILE):
                 continue               # a stale copy; the build adds the tree's own
             files[p.relative_to(HERE).as_posix()] = p.read_bytes()
     return files
@@ -234,10 +236,11 @@ def get_requires_for_build_editable(config_settings=None):
 
 def build_wheel(wheel_directory, config_settings=None, metadata_directory=None):
     files = _package_files()
-    _, inc = _c_sources()
+    src, inc = _c_sources()
     if inc is not None:
         files[f"{PKG}/elastica.h"] = (inc / "elastica.h").read_bytes()
-        abi = _abi_module(inc / "elastica.h")
+        files[f"{PKG}/binding.h"] = (src / "binding.h").read_bytes()      # (_ffi._internal)
+        abi = _abi_module(inc / "elastica.h", src / "binding.h")
         if abi is not None:
             files[f"{PKG}/{ABI_FILE}"] = abi
     if os.environ.get("LIBELASTICA_SKIP_BUILD"):

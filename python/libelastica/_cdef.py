@@ -55,12 +55,21 @@ def load_module(path: Path, text: str):
     return module.ffi if getattr(module, _DIGEST, None) == digest(text) else None
 
 
-def declarations(header, folders):
-    """(ffi, path of the pre-parsed module used or None, the declarations' digest): the
-    first of ``folders`` whose module was made from ``header``, else the header parsed
-    now (the same declarations)."""
+def binding_text(header, internal=None) -> str:
+    """The binding's cdef: the header's (:func:`cdef_text`), then where given the internal
+    header's, libelastica/binding.h (the binding's own entry, not public: its declarations
+    take the header's types only, so the header's digest covers their layout)."""
     text = cdef_text(header)
-    crc = digest(text)
+    return text if internal is None else text + "\n" + cdef_text(internal)
+
+
+def declarations(header, folders, internal=None):
+    """(ffi, path of the pre-parsed module used or None, the header's digest): the first
+    of ``folders`` whose module was made from ``header`` and ``internal``
+    (:func:`binding_text`), else their text parsed now (the same declarations). The
+    digest is the public header's (el_abi_digest's)."""
+    text = binding_text(header, internal)
+    crc = digest(cdef_text(header))
     for folder in dict.fromkeys(Path(f) for f in folders):
         ffi = load_module(folder / FILE, text)
         if ffi is not None:
@@ -79,13 +88,13 @@ def abi_header(header, out) -> None:
                          f"#define EL_ABI_DIGEST 0x{digest(cdef_text(header)):08x}UL\n#endif\n")
 
 
-def write_module(header, out) -> None:
-    """Write the pre-parsed module of ``header`` to ``out`` (replaced whole, never left
-    half written)."""
+def write_module(header, out, internal=None) -> None:
+    """Write the pre-parsed module of ``header`` (and ``internal``: :func:`binding_text`) to
+    ``out`` (replaced whole, never left half written)."""
     import os
     import tempfile
     from cffi import FFI, __version__
-    text = cdef_text(header)
+    text = binding_text(header, internal)
     builder = FFI()
     builder.cdef(text)
     builder.set_source(MODULE, None)
@@ -102,7 +111,7 @@ def write_module(header, out) -> None:
 if __name__ == "__main__":
     if len(sys.argv) == 4 and sys.argv[1] == "--abi":
         abi_header(sys.argv[2], sys.argv[3])
-    elif len(sys.argv) == 3:
-        write_module(sys.argv[1], sys.argv[2])
+    elif len(sys.argv) in (3, 4):
+        write_module(sys.argv[1], sys.argv[2], sys.argv[3] if len(sys.argv) == 4 else None)
     else:
-        sys.exit("usage: python _cdef.py HEADER OUT.py | python _cdef.py --abi HEADER OUT.h")
+        sys.exit("usage: python _cdef.py HEADER OUT.py [INTERNAL.h] | python _cdef.py --abi HEADER OUT.h")

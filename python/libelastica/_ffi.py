@@ -44,6 +44,15 @@ def _header() -> str:
     return path
 
 
+def _internal(header: str) -> Optional[str]:
+    """The binding's internal header (libelastica/binding.h, _cdef.binding_text) that goes
+    with ``header``: beside it in the package, or the source tree's; None for an installed
+    elastica.h (the binding then takes its plain paths: _fit_call.py)."""
+    here = Path(header).parent
+    return _find([here / "binding.h"] if here == _HERE else
+                 [_SRC_ROOT / "libelastica" / "binding.h"] if here == _SRC_ROOT / "include" else [])
+
+
 def _library() -> Optional[str]:
     """The library's file, None for the system loader's."""
     env = os.environ.get("LIBELASTICA_PATH")
@@ -84,7 +93,8 @@ _LIBRARY = _library()
 _HEADER = _header()
 # pre-parsed in the package (wheel), else beside the library (make lib); CDEF_MODULE:
 # the module used, None when the header was parsed (~40 ms more)
-ffi, CDEF_MODULE, _DIGEST = _cdef.declarations(_HEADER, [_HERE] + ([Path(_LIBRARY).parent] if _LIBRARY else []))
+ffi, CDEF_MODULE, _DIGEST = _cdef.declarations(_HEADER, [_HERE] + ([Path(_LIBRARY).parent] if _LIBRARY else []),
+                                                _internal(_HEADER))
 lib = _load(ffi, _LIBRARY)
 _check_abi(lib, _HEADER, _LIBRARY, _DIGEST)
 

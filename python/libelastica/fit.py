@@ -17,7 +17,6 @@ from __future__ import annotations
 
 import dataclasses
 import math
-import numbers
 from dataclasses import dataclass
 from typing import Mapping, Optional, Union
 
@@ -33,7 +32,8 @@ from .cubic import SPARSE_POINTS, SparseWarning, smooth_fits_better
 from ._text import LengthFormat, lengths
 from ._values import ValueEquality
 from .fit_cost import EndConditionWarning, checked_ends
-from .fit_input import explain_input_status, require_distinct
+from ._fit_call import one_call
+from .fit_input import _is_number, _pair, explain_input_status, require_distinct
 from .misfit import (MISFIT_RATIO, MisfitWarning, OutlierWarning, _Figures, _places, _verdict,
                      _warn_outliers, misfit_summary)
 from .fit_retrace import retrace_gate
@@ -301,20 +301,6 @@ def wander_summary(gap: int, points=None, unit: str = "", numbered: bool = True,
              if numbered else f"the points at {places}")
     return (f"the curve wanders away from its points between {where}: it loops, strays, swings "
             "or passes them out of order where no point holds it, its distances to the points small all the same")
-
-
-def _pair(value, name: str):
-    try:
-        a, b = (as_real(v, name, finite=False) if v is not None else None for v in value)
-    except (TypeError, ValueError):
-        raise ValueError(f"fit: constraint {name!r} must be a pair, got {value!r}") from None
-    return a, b
-
-
-def _is_number(value) -> bool:
-    """A real number (Python's or numpy's, a 0-d array), not a pair."""
-    return (isinstance(value, numbers.Real) and not isinstance(value, bool)) or \
-        (isinstance(value, np.ndarray) and value.ndim == 0)
 
 
 def _set_constraints(o, model: str, n: int, constraints: Optional[Mapping[str, object]]):
@@ -603,36 +589,43 @@ def _fit(points, model: str = "discrete", fixed: Optional[Mapping[str, float]] =
                          "el.fit(xy) (frame.to_3d maps back), or el.fit_keyline(points); a third "
                          "column that is no coordinate (an id, an intensity): pass "
                          "points[:, :2]")
-    pts = checked_points(pts, "points", 2)
-    n = pts.shape[0]
-    require_distinct(pts)       # 4 or more, repeats counted once (QA qapy F6)
-    if order not in ("given", "curve"):
-        raise ValueError(f"fit: order must be 'given' or 'curve', got {order!r}")
-    idx, unordered = None, None
-    if order == "curve":
-        idx = curve_order(pts)
-        pts = np.ascontiguousarray(pts[idx])
+    smooth, one = model == "smooth", None
+    if order == "given" and initial is None and not constraints:    # one crossing (_fit_call.py)
+        one = one_call(pts, model, lambda n: _options(model, n, fixed, bounds, tol, max_iter, limited_memory,
+                                                      max_candidates, param, None, distance, None))
+    if one is not None:
+        idx, (pts, n, unordered, fig, o, res, st, dist, foot, screened) = None, one
     else:
-        unordered = ordering(pts)
-    # the points' noise figures, computed once where a test below asks them: the check of a
-    # fit in the points' order, of points that turn back, the misfit verdict (its points are
-    # these: the result's, or its free fit's, a fit of the same points)
-    fig = _Figures(pts)
-    kind = SmoothElastica if model == "smooth" else DiscreteElastica
-    if initial is not None and not isinstance(initial, kind):
-        raise ValueError(f"fit: initial must be a {kind.__name__} for the {model} model, got "
-                         f"{type(initial).__name__}")
-    try:   # options of the wrong shape (not a mapping, bounds not pairs, ...): ValueError
-        o = _options(model, n, fixed, bounds, tol, max_iter, limited_memory, max_candidates, param,
-                     initial, distance, constraints)
-        init = initial._c() if initial is not None else ffi.NULL
-    except (TypeError, AttributeError) as exc:
-        raise ValueError(f"fit: invalid option ({exc})") from None
-    smooth = model == "smooth"
-    res = ffi.new(f"el_fit_{model}_result *")
-    dist, foot = np.empty(n), np.empty(n)
-    st = call(lib.el_fit_smooth if smooth else lib.el_fit_discrete, dptr(pts), n, o, init, res,
-              dptr(dist), dptr(foot), keep=(pts, dist, foot, initial))     # Ctrl-C: the CLI's
+        screened = None
+        pts = checked_points(pts, "points", 2)
+        n = pts.shape[0]
+        require_distinct(pts)       # 4 or more, repeats counted once (QA qapy F6)
+        if order not in ("given", "curve"):
+            raise ValueError(f"fit: order must be 'given' or 'curve', got {order!r}")
+        idx, unordered = None, None
+        if order == "curve":
+            idx = curve_order(pts)
+            pts = np.ascontiguousarray(pts[idx])
+        else:
+            unordered = ordering(pts)
+        # the points' noise figures, computed once where a test below asks them: the check of a
+        # fit in the points' order, of points that turn back, the misfit verdict (its points are
+        # these: the result's, or its free fit's, a fit of the same points)
+        fig = _Figures(pts)
+        kind = SmoothElastica if model == "smooth" else DiscreteElastica
+        if initial is not None and not isinstance(initial, kind):
+            raise ValueError(f"fit: initial must be a {kind.__name__} for the {model} model, got "
+                             f"{type(initial).__name__}")
+        try:   # options of the wrong shape (not a mapping, bounds not pairs, ...): ValueError
+            o = _options(model, n, fixed, bounds, tol, max_iter, limited_memory, max_candidates, param,
+                         initial, distance, constraints)
+            init = initial._c() if initial is not None else ffi.NULL
+        except (TypeError, AttributeError) as exc:
+            raise ValueError(f"fit: invalid option ({exc})") from None
+        res = ffi.new(f"el_fit_{model}_result *")
+        dist, foot = np.empty(n), np.empty(n)
+        st = call(lib.el_fit_smooth if smooth else lib.el_fit_discrete, dptr(pts), n, o, init, res,
+                  dptr(dist), dptr(foot), keep=(pts, dist, foot, initial))     # Ctrl-C: the CLI's
     explain_input_status(st, pts)       # NaN / inf, an extent out of range: named (QA25 F5)
     if res.constraint and st in (lib.EL_EINVAL, lib.EL_EDOM):
         _raise_constraint(st, res.constraint, _conditions(constraints, fixed), constraints)
@@ -713,7 +706,7 @@ def _fit(points, model: str = "discrete", fixed: Optional[Mapping[str, float]] =
                          stacklevel=4)
     if check_misfit:
         r = _judged(r, judged_fit(r, constraints or fixed or bounds, distance), fig)
-        _warn_outliers(r)
+        _warn_outliers(r, screened)
     if check_sparse and not smooth and n < SPARSE_POINTS:
         r = _sparse(r, constraints)
     return r

@@ -1,11 +1,14 @@
 """el.fit's checks of its points that need the C status first (off the common path): why a
 fit returned EL_EDOM / EL_EINVAL for input it accepted, the point, column and value named;
-and its count of the points, repeats counted once (:func:`require_distinct`)."""
+its count of the points, repeats counted once (:func:`require_distinct`); and the values of
+its constraints (pairs, numbers: fit._set_constraints)."""
 from __future__ import annotations
+
+import numbers
 
 import numpy as np
 
-from ._ffi import DomainError, invalid, lib
+from ._ffi import DomainError, as_real, invalid, lib
 
 __all__ = []
 
@@ -124,3 +127,18 @@ def explain_input_status(st: int, pts: np.ndarray, name: str = "fit") -> None:
         f"{name}: the points span only {extent:.3g}, less than the {EXTENT_LO:g} the fit "
         f"covers (its data extent within ~{EXTENT_LO:g} .. {EXTENT_HI:g}): scale them, e.g. "
         "points / np.ptp(points) (the fit is unit-equivariant)"))
+
+
+# fit's constraint values (fit._set_constraints)
+def _pair(value, name: str):
+    try:
+        a, b = (as_real(v, name, finite=False) if v is not None else None for v in value)
+    except (TypeError, ValueError):
+        raise ValueError(f"fit: constraint {name!r} must be a pair, got {value!r}") from None
+    return a, b
+
+
+def _is_number(value) -> bool:
+    """A real number (Python's or numpy's, a 0-d array), not a pair."""
+    return (isinstance(value, numbers.Real) and not isinstance(value, bool)) or \
+        (isinstance(value, np.ndarray) and value.ndim == 0)

@@ -14,6 +14,7 @@ None
 """
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass
 from typing import Optional, Tuple
 
@@ -673,15 +674,22 @@ def fit_outliers(r, free_distances=None) -> np.ndarray:
     return _fit_outliers(r, free_distances)[0]
 
 
-def _fit_outliers(r, free_distances=None):
+def _fit_outliers(r, free_distances=None, screened=None):
     """:func:`fit_outliers` with stray_point's figures (index, distance, noise, gain) where
-    it named a stray point, else None."""
-    from .fit import OUTLIER_MIN_POINTS, far_points
+    it named a stray point, else None. screened: el.fit's one call's (median, maximum,
+    distances) of |distances| (_fit_call.py), far_points' test of them where they are
+    ``r.distances``' and known: none far there, without far_points' numpy calls."""
+    from .fit import OUTLIER_FACTOR, OUTLIER_MIN_POINTS, far_points
     if r.distances is None:
         return np.empty(0, dtype=np.intp), None
     if free_distances is None and r.constraints and getattr(r, "free", None) is not None:
         free_distances = r.free.distances
-    far = far_points(r.distances, r.points, free_distances=free_distances)
+    if (screened is not None and free_distances is None and screened[2] is r.distances
+            and len(r.distances) >= OUTLIER_MIN_POINTS and not math.isnan(screened[0])
+            and not screened[1] > OUTLIER_FACTOR * (1.4826 * screened[0])):
+        far = np.empty(0, dtype=np.intp)      # (far_points' answer: none beyond the factor)
+    else:
+        far = far_points(r.distances, r.points, free_distances=free_distances)
     # (stray_point names none among OUTLIER_MIN_POINTS points or more: neither asked nor
     # imported there, el.fit's every fit of as many; a function-level import costs a lookup)
     if len(far) or r.constraints or (r.points is not None and len(r.points) >= OUTLIER_MIN_POINTS):
@@ -691,10 +699,11 @@ def _fit_outliers(r, free_distances=None):
     return (far, None) if stray is None else (np.array([stray[0]], dtype=np.intp), stray)
 
 
-def _warn_outliers(r) -> None:
+def _warn_outliers(r, screened=None) -> None:
     """:func:`fit`'s OutlierWarning of result ``r`` where :func:`fit_outliers` names points
-    (numbered in the caller's order: ``r.order``'s where fitted in curve order)."""
-    far, stray = _fit_outliers(r)
+    (numbered in the caller's order: ``r.order``'s where fitted in curve order; screened:
+    :func:`_fit_outliers`')."""
+    far, stray = _fit_outliers(r, screened=screened)
     if not len(far):
         return
     rows = sorted(int(r.order[i]) for i in far) if r.order is not None else far

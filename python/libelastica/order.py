@@ -166,9 +166,10 @@ def out_of_order(points, ratio: float = ORDER_RATIO, screen: bool = True) -> Ord
     return ordering(_plane_points(points, "out_of_order"), ratio, screen)
 
 
-def ordering(xy, ratio: float = ORDER_RATIO, screen: bool = True) -> Ordering:
+def ordering(xy, ratio: float = ORDER_RATIO, screen: bool = True, screened=None) -> Ordering:
     """:func:`out_of_order` of points xy already checked (as_points: (n, 2) float64,
-    C-contiguous, finite): fit's, which has checked them."""
+    C-contiguous, finite): fit's, which has checked them; screened: the screen's
+    el_order_screen_result (its step and turn as here) where computed already (_fit_call.py)."""
     n = len(xy)
     if n < 3:
         return Ordering(None, polyline_length(xy), float("nan"))
@@ -178,7 +179,7 @@ def ordering(xy, ratio: float = ORDER_RATIO, screen: bool = True) -> Ordering:
     # its extent however ordered; shuffled points' screen turns ~pi/2 a vertex), answers in
     # order without the whole polyline's length (given nan) nor curve_order (bench_fit.py's
     # 1000 noisy points on k = 1.3 paid its 16 ms in a 1 ms fit; el.fit runs this each time)
-    sc = _screen(xy, step, step > 1)
+    sc = _screen(xy, step, step > 1) if screened is None else screened
     if step > 1:
         if (not sc.length > ratio * sc.extent or not sc.turn > TURN_PER_VERTEX
                 or not _run_means_turn(xy, step) > TURN_PER_VERTEX):

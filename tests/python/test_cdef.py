@@ -16,7 +16,7 @@ from libelastica import _cdef, _ffi
 
 LIBRARY = Path(_ffi._LIBRARY)
 BUILT = LIBRARY.parent / _cdef.FILE          # make lib writes it beside the library
-TEXT = _cdef.cdef_text(_ffi._header())
+TEXT = _cdef.binding_text(_ffi._header(), _ffi._internal(_ffi._header()))   # (with binding.h's)
 
 PROBE = ("import sys, libelastica as el, libelastica._ffi as f; "
          "print(f.CDEF_MODULE); print('pycparser' in sys.modules); "

@@ -352,6 +352,7 @@ def test_a_fit_computes_the_points_noise_figures_once(monkeypatch):
     from test_fit_retrace import SCANS, _scan
     misfit_module = importlib.import_module("libelastica.misfit")
     fit_module = importlib.import_module("libelastica.fit")
+    one_call = importlib.import_module("libelastica._fit_call")._ONE_CALL is not None
     calls = []
     noise, distinct = misfit_module._noise, misfit_module._distinct
 
@@ -378,7 +379,10 @@ def test_a_fit_computes_the_points_noise_figures_once(monkeypatch):
                 r = el.fit(P, model=model, distance=None if distance == "orthogonal" else distance)
             counts = {k: calls.count(k) for k in ("quick", "plain", "distinct")}
             assert max(counts.values()) <= 1, (name, model, distance, counts)
-            assert counts["quick"] == 1 and r.misfit is None, (name, model, distance, counts)
+            # (el_fit_noise_quick's figure comes with the fit where el_binding_fit's one call
+            # ran, _fit_call.py: no _noise call then)
+            quick = 0 if one_call else 1
+            assert counts["quick"] == quick and r.misfit is None, (name, model, distance, counts)
             said = [x for x in w if issubclass(x.category, el.OrderWarning)]
             assert len(said) == (name == "out_and_back"), (name, model, distance, said)
 

@@ -3,6 +3,7 @@ call; its numpy formulas took ~27 us of a 0.6 ms fit): the C screen against the 
 formulas it replaced (the points' extent, the every-k-th polyline's length and mean |turn|
 a vertex, the whole polyline's length), and out_of_order's answers against the numpy
 out_of_order it replaced, on ordered, shuffled, coiled, 3-D and degenerate sets."""
+import importlib
 import warnings
 
 import numpy as np
@@ -10,6 +11,8 @@ import pytest
 
 import libelastica as el
 from libelastica import order as O
+
+FC = importlib.import_module("libelastica._fit_call")
 from libelastica._ffi import dptr, ffi, lib
 
 # numpy's atan2 is vectorised (SVML on AVX-512): an ulp or two from glibc's; its sums of
@@ -152,7 +155,8 @@ def test_out_of_order_answers_as_the_numpy_one(dim, monkeypatch):
 
 def test_fit_checks_the_order_through_the_c_screen(monkeypatch):
     """el.fit's check is the C screen (one el_order_screen of every k-th point on 1000
-    noisy points in order), answered as before: no OrderWarning in order, one shuffled."""
+    noisy points in order: inside el_binding_fit's one call, _fit_call.py, else through
+    order._screen), answered as before: no OrderWarning in order, one shuffled."""
     rng = np.random.default_rng(5)
     P = curve(1000, rng, 0.3, 0.002)
     calls = []
@@ -161,7 +165,7 @@ def test_fit_checks_the_order_through_the_c_screen(monkeypatch):
     with warnings.catch_warnings():
         warnings.simplefilter("error", el.OrderWarning)
         el.fit(P, distance="paired")
-    assert calls == [1000 // O.SCREEN_POINTS]
+    assert calls == ([] if FC._ONE_CALL is not None else [1000 // O.SCREEN_POINTS])
     with pytest.warns(el.OrderWarning):
         el.fit(P[rng.permutation(1000)], distance="paired")
 

@@ -22,6 +22,8 @@ pkg = Path(el.__file__).resolve().parent
 assert Path(sys.prefix).resolve() in pkg.parents, pkg          # the installed copy
 assert (pkg / "libelastica.so").is_file() and (pkg / "elastica.h").is_file()
 assert el._ffi.CDEF_MODULE == str(pkg / "_elastica_abi.py")     # the header pre-parsed
+assert (pkg / "binding.h").is_file()                           # el.fit's one call (_fit_call.py)
+assert sys.modules["libelastica._fit_call"]._ONE_CALL is not None
 assert "pycparser" not in sys.modules                          # (not parsed at import)
 c = el.SmoothElastica(x0=0, y0=0, phi=0, mu=1.0, k=0.8, q=0.0, length=3.0)
 s = np.linspace(0, 3, 40)
