@@ -424,7 +424,7 @@ def said_in_the_schema_of_now(doc, b, prefs):
     Gui.ActiveDocument.setEdit(b.Name)
     G.wait()
     panel = T.CURRENT[0]
-    text = panel.result.text()
+    text = panel.details.text()         # the Status in full (the result line says one line)
     G.check(before.startswith("G2") and " mm" in before and b.Status == before
             and "mm" not in text and " in, tension " in text and "/in" in text,
             f"a panel opened after a schema change says the Status in inches: {text!r}")
@@ -463,7 +463,7 @@ def said_after_undo(doc, b, prefs):
         Gui.ActiveDocument.setEdit(b.Name)
         G.wait()
         panel = T.CURRENT[0]
-        text = panel.result.text()
+        text = panel.details.text()     # the Status in full (the result line: one line)
         G.screenshot("gui_blend_said_after_undo.png")
         panel.reject()
         G.pump()

@@ -41,7 +41,8 @@ def blend_follows(doc, sheet):
             and abs(before[0] - 0.001) < 1e-12,
             f"F2: the blend panel's bound Tension follows its cell 0.001 -> 0.003 "
             f"(box {before[0]} -> {now[0]}, feature {b.Tension})")
-    G.check(now[2] == B.descriptions(b) and now[2] != before[2]
+    from freecad.elastica.blend_panel import row_lines      # (one line a row; in full: tips)
+    G.check(now[2] == row_lines(b) and now[2] != before[2]
             and abs(now[1] - float(b.BlendLength)) < 1e-3 and now[1] != before[1],
             f"F2: and its solution list and Length are the blend's of now ({before[1]} -> "
             f"{now[1]}, BlendLength {float(b.BlendLength)}; list {now[2][:1]})")

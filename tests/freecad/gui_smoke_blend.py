@@ -48,8 +48,19 @@ def blend_panel(doc, S):
     panel.continuity.setCurrentIndex(1)         # G2 by tension: >= 0 only
     G.wait()
     G.check(b.Continuity == "G2" and not b.Status.startswith("error") and
-            panel.tension.minimum() == 0.0 and "guide ducks' forces" in panel.result.text(),
+            panel.tension.minimum() == 0.0 and "guide ducks' forces" in panel.details.text(),
             f"blend: G2 by tension, the tension field from 0 ({b.Status})")
+    # one line said, the why on demand (FreeCAD's panels): Details and the tooltip in full
+    line = panel.result.text()
+    G.check(line.startswith("G2 blend, ") and "<br>" not in line and len(line) < 80
+            and panel.details.text().startswith("G2 from solution")
+            and panel.result.toolTip() == panel.details.text() and panel.more.isVisible()
+            and not panel.details.isVisible(),
+            f"blend G2: one result line, the Status in full under Details ({line!r})")
+    panel.more.setChecked(True)
+    G.pump()
+    G.check(panel.details.isVisible(), "blend G2: Details shows the full Status")
+    panel.more.setChecked(False)
     panel.continuity.setCurrentIndex(0)
     G.wait()
     G.check(panel.tension.minimum() < 0, "blend: G1 takes a negative tension again")
@@ -86,14 +97,16 @@ def blend_panel(doc, S):
     panel.continuity.setCurrentIndex(1)         # G2
     G.wait()
     G.check(b.Continuity == "G2" and len(b.GuideDucks) == 2
-            and "G2 from solution" in panel.result.text()
+            and panel.result.text().startswith("G2 blend, ")
+            and "G2 from solution" in panel.details.text()
             and abs(b.Shape.Length - 70.0) < 1e-2
             and b.ViewObject.Proxy.overlay_counts() == (2, 2 * 3),
             f"blend: G2 from the chosen solution at the typed length, guide ducks drawn ({b.Status})")
     rows = [panel.list.item(r).text() for r in range(panel.list.count())]
     G.check(rows and all(r.startswith("G1") for r in rows) and
-            sum("drawn: the G2" in r for r in rows) == 1 and
-            "drawn: the G2" in rows[b.Solution - 1],
+            sum("drawn: G2" in r for r in rows) == 1 and
+            "drawn: G2" in rows[b.Solution - 1] and "drawn: the G2 blend bent from it" in
+            panel.list.item(b.Solution - 1).toolTip().replace("\u00a0", " "),
             f"blend G2: the Solutions rows are the G1 solutions, the picked one says what is "
             f"drawn (QA gui F10) ({rows[b.Solution - 1] if rows else rows})")
     G.screenshot("gui_blend_panel.png")

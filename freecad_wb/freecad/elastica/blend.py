@@ -19,7 +19,7 @@ from .geometry import (binding_module, edge_end, el, global_element, is_sketch,
                        nearest_parameter, np, part_bspline, plane_coordinates, to_3d)
 from .links import followed_edge
 from .units import (length_mark, length_text, length_unit_mark, mm_marked, number_text,
-                    per_area_mark, per_length,
+                    per_area_mark, per_length, say,
                     per_length_mark, tension_mark, tension_or_zero,
                     tension_unit_mark)
 from .proxy import (FeatureProxy, InputProblem, add_enum, add_geometry_index, add_length,
@@ -570,7 +570,7 @@ class BlendProxy(FeatureProxy):
             # "; " parts: the panel shows one a line
             start = f"G2 from solution {i + 1} of {len(curves)}{followed}{r['g2_note']}" \
                 if curves else "G2 from the library's own start (no G1 solution at this tension)"
-            set_said(obj, "Status", (
+            status = (
                 f"{start}; length "
                 f"{length_mark(sp.length, 4)}, tension "
                 f"{tension_mark(sp.tension, sp.length)}{free}; energy "
@@ -579,9 +579,17 @@ class BlendProxy(FeatureProxy):
                 f"; guide ducks' forces {forces} ({tension_unit_mark()} \u00d7 EI/2)"
                 + (f"; G2 to {sp.residual:.2g} (nearly straight under tension: double "
                    f"precision resolves its pieces to {sp.resolution:.2g}, the library's "
-                   "tolerance is 1e-10)" if sp.residual > 1e-10 else "")))
+                   "tolerance is 1e-10)" if sp.residual > 1e-10 else ""))
         else:
-            obj.Status = f"solution {i + 1} of {len(curves)}{followed}"
+            status = f"solution {i + 1} of {len(curves)}{followed}"
+        set_said(obj, "Status", status)
+        # why the blend is not the one asked (followed, another than the free batten shown):
+        # in the Report view once, as FreeCAD's own features say theirs; the panel says one
+        # line and the why under Details (blend_panel.status_line)
+        why = say(status) if followed or (sp and r["g2_note"]) else ""
+        if why and why != getattr(self, "_told", ""):
+            App.Console.PrintMessage(f"Elastica {obj.Label}: {why}\n")
+        self._told = why
 
     def on_error(self, obj):
         """A failed solve lists no solutions (the old curve stays, drawn dashed)."""

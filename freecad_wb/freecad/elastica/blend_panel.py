@@ -5,18 +5,20 @@ where the command or G2 did not start at the free batten, the length chosen and 
 (blend_start), on its warning line."""
 from __future__ import annotations
 
-from PySide import QtGui
+import re
+
+from PySide import QtCore, QtGui
 
 from . import blend as B
 from . import blend_start as BS
 from .geometry import is_sketch
 from .panelbase import Panel, said_now
-from .units import length_mark, outer_parts, unbroken
+from .units import length_mark, length_text, outer_parts, per_length, unbroken
 
 
 G2_LIST_TIP = (". G2: these are the G1 solutions; the G2 blend is bent from the one picked "
                "(its branch: loops, inflections), and that row says what is drawn: the G2 "
-               "blend's length, energy, inflections")
+               "blend's length (its energy, inflections and curvature in the row's tooltip)")
 
 
 class BlendPanel(Panel):
@@ -63,6 +65,7 @@ class BlendPanel(Panel):
         self.enablers.append((self.list, lambda: not (o.Continuity == "G2" and
                                                       o.Mode == "length" and o.Length == 0)))
         self.row(s, "", self.result)
+        self.details_rows(s)
         self.bspline_box("the elastica", "Degree of the B-spline (3 to 7): 5 to 7 need few "
                          "poles")
         out = self.box("Output")
@@ -259,11 +262,58 @@ class BlendPanel(Panel):
     def descriptions(self):
         return B.g2_rows(self.obj)
 
+    def details_rows(self, grid):
+        """A "Details" toggle under the one-line result (FreeCAD's own message boxes' Show
+        Details...): the full Status, hidden until asked, and shown only where it says more."""
+        self.more = QtGui.QToolButton()
+        self.more.setText("Details")
+        self.more.setCheckable(True)
+        self.more.setAutoRaise(True)
+        self.more.setToolButtonStyle(QtCore.Qt.ToolButtonTextBesideIcon)
+        self.more.setArrowType(QtCore.Qt.RightArrow)
+        self.more.setToolTip("Why this blend: the full Status (also in the Report view, once "
+                             "a recompute)")
+        self.details = QtGui.QLabel()
+        self.details.setWordWrap(True)
+        self.details.setTextInteractionFlags(QtCore.Qt.TextSelectableByMouse)
+        self.details.setVisible(False)
+        self.more.toggled.connect(self.show_details)
+        self.row(grid, "", self.more)
+        self.row(grid, "", self.details)
+
+    def show_details(self, shown=None):
+        shown = self.more.isChecked() if shown is None else shown
+        self.more.setArrowType(QtCore.Qt.DownArrow if shown else QtCore.Qt.RightArrow)
+        self.details.setVisible(bool(shown) and self.more.isVisible())
+
+    def full_text(self):
+        """The Status in full, one part a line, and the B-spline (the Details, the tooltip)."""
+        o = self.obj
+        said = said_now(o, "Status")
+        if said.startswith("error"):
+            return "<br>".join(outer_parts(said.removeprefix("error: ")))
+        return "<br>".join(outer_parts(said) + [f"B-spline: {o.Poles} poles, degree {o.Degree}"])
+
+    def show_error(self):
+        """The error line in one line (what is wrong, the action to take: error_line), the
+        full message in its tooltip and under Details."""
+        super().show_error()
+        o = self.obj
+        if self.error is not None and not (self._input_said or self._ok_said) and \
+                o.Status.startswith("error"):
+            self.error[1].setText(error_line(said_now(o, "Status")))
+            self.error[1].setToolTip(self.full_text())
+        elif self.error is not None:
+            self.error[1].setToolTip("")
+
     def refresh(self):
         o = self.obj
         self.list.blockSignals(True)
         self.list.clear()
-        self.list.addItems([unbroken(t) for t in self.descriptions()])    # quantities whole
+        full = self.descriptions()
+        for j, t in enumerate(row_lines(o)):         # one line each, in full in its tooltip
+            self.list.addItem(unbroken(t))          # quantities whole
+            self.list.item(j).setToolTip(unbroken(full[j]) if j < len(full) else "")
         if o.Descriptions:
             self.list.setCurrentRow(max(0, min(o.Solution - 1, len(o.Descriptions) - 1)))
         self.list.blockSignals(False)
@@ -287,14 +337,19 @@ class BlendPanel(Panel):
                 self.show_no_value(box)
         self.list.setToolTip(self.LIST_TIP + (G2_LIST_TIP if o.Continuity == "G2" else ""))
         super().refresh()
+        full = self.full_text()
+        self.result.setToolTip("" if o.Status.startswith("error") else full)
+        self.details.setText(full)
+        said = self.error[1].text() if o.Status.startswith("error") else self.result.text()
+        self.more.setVisible(bool(o.Status) and full != said)
+        self.show_details()
 
     LIST_TIP = ("Every elastic curve for these ends, by bending energy: length, energy, "
-                "inflections, loops, largest curvature; pick one to use it")
+                "inflections, loops (each row's tooltip: its largest curvature and turn too); "
+                "pick one to use it")
 
     def result_text(self):
-        o = self.obj
-        return "<br>".join(outer_parts(said_now(o, 'Status')) +
-                           [f"B-spline: {o.Poles} poles, degree {o.Degree}"])
+        return status_line(self.obj)
 
     def copy_code(self):
         if not (self.into_sketch.isEnabled() and self.into_sketch.isChecked()):
@@ -302,3 +357,95 @@ class BlendPanel(Panel):
         doc = f"App.getDocument({self.doc.Name!r})"
         return ("from freecad.elastica import blend as elastica_blend\n"
                 f"elastica_blend.copy_into_sketch({doc}.getObject({self.obj.Name!r}))\n")
+
+
+# ----------------------------------------------------------------- one line a state
+# FreeCAD's own panels say one line (what was made, or what is wrong and the one action to
+# take) and give the why on demand: the Status in full is the Details, the tooltip and the
+# Report view's (blend.BlendProxy.apply: once a recompute); QA's F4 line and arc at G2 said
+# ~14 lines in the Combo View (/tmp/fcblend/shots/g10_g2.png).
+
+def _no_asides(text):
+    """``text`` without its parenthesised asides (nested ones too)."""
+    out, depth = [], 0
+    for c in text:
+        if c == "(":
+            depth += 1
+        elif c == ")" and depth:
+            depth -= 1
+        elif not depth:
+            out.append(c)
+    return re.sub(r"\s+", " ", "".join(out)).strip(" ,;:")
+
+
+def status_line(obj):
+    """One line for a solved blend: what is drawn, its length, and where it is not what
+    was asked for (the fairest of its branch shown instead of the free batten, no free G2
+    batten found, the library's own start), in a few words; the why is the Details'."""
+    o = obj
+    status = said_now(o, "Status")
+    first = outer_parts(status)[0]
+    length = length_text(float(o.BlendLength), 4)
+    picked = f"solution {o.Solution} of {len(o.Lengths)}"
+    if o.Continuity != "G2" or not status.startswith("G2"):
+        return f"G1 blend, {length}: {picked}" + (" (followed: see Details)" if "(" in first
+                                                  else "")
+    if "shown instead the fairest between it and the G1" in first:
+        what = "fairest of its branch"
+    elif "snake" in first:
+        what = "fairest by length (free batten: a snake)"
+    elif "no free G2 batten (tension 0) was found" in first:
+        what = "fairest by length (no free batten)"
+    elif "library's own start" in first:
+        what = "from the library's own start" + ("" if "did not bend" not in first
+                                                  else f", not {picked}")
+    elif "(free batten)" in status:
+        what = f"free batten, from {picked}"
+    else:
+        what = f"from {picked}"
+    return f"G2 blend, {length}: {what}"
+
+
+def error_line(status):
+    """One line for a failed solve (``status``: 'error: ...' as said): what is wrong (the
+    message's first part, its asides left to the Details) and the one action its hint
+    names (the lengths a G2 blend was found at, the highest tension one was, ...)."""
+    text = status.removeprefix("error: ")
+    parts = outer_parts(text)
+    if len(parts) == 1 and "(" not in text:
+        return text[:1].upper() + text[1:]
+    what = _no_asides(parts[0])
+    m = re.search(r"G2 blends were found at the lengths (.*?) \(tried", text)
+    n = re.search(r"found at tensions up to about (.*?), but none", text)
+    free = re.search(r"the free G2 batten \(tension 0\) is (.*?) long", text)
+    met = re.search(r"reached battens of tension up to (.*?) \(length", text)
+    if m:
+        found = m.group(1).split(", ")
+        action = ("Solve for a length of " + found[0] if len(found) == 1 else
+                  f"Solve for a length, {found[0]} to {found[-1]}") + ", or G1"
+    elif n or met:
+        action = f"try a tension up to {(n or met).group(1)}, a length, or G1"
+    elif free:
+        action = f"try a length from {free.group(1)}, or G1"
+    else:                       # the advice after the last part's last ': '
+        tail = _no_asides(parts[-1]).rsplit(": ", 1)
+        action = tail[-1] if len(parts) > 1 or len(tail) > 1 else ""
+    line = f"{what}: {action}" if action and action not in what else what
+    return line[:1].upper() + line[1:]
+
+
+def row_lines(obj):
+    """The Solutions rows in one line each (blend.descriptions / g2_rows in full are their
+    tooltips): length, energy, inflections, loops where any; at G2 each row its G1 solution
+    and the picked one the G2 blend drawn from it (its length)."""
+    n = len(obj.Descriptions)
+    data = [obj.Lengths, obj.Energies, obj.Inflections, obj.Loops]
+    if any(len(d) != n for d in data):
+        return list(obj.Descriptions)
+    rows = [f"{j + 1}: {length_text(L, 4)}, energy {per_length(E)}, "
+            f"{B.plural(i, 'inflection')}" + (f", {B.plural(lp, 'loop')}" if lp else "")
+            for j, (L, E, i, lp) in enumerate(zip(*data))]
+    if obj.Continuity != "G2" or not rows or not obj.Curves:
+        return rows
+    drawn = f" \u2192 drawn: G2 {length_text(float(obj.BlendLength), 4)}"
+    return [f"G1 {r}" + (drawn if j == obj.Solution - 1 else "") for j, r in enumerate(rows)]
