@@ -5,6 +5,7 @@ the G1 solution's 206.8 mm; the fairest G2 blend of its branch between the two l
 Solutions rows say what is drawn. Where the free batten is about the G1 length it stays."""
 import math
 import re
+from unittest import mock
 
 import FreeCAD as App
 import Part
@@ -69,6 +70,27 @@ class BlendG2DefaultTest(S.DocTest):
         b.Continuity = "G1"
         self.doc.recompute()
         self.assertEqual(Bl.g2_rows(b), Bl.descriptions(b))
+
+    def test_the_rows_read_figures_stored_at_compute(self):
+        """The Solutions rows are refreshed at every panel refresh: the drawn G2 blend's
+        energy, inflections and largest curvature are stored by the recompute (G2Figures),
+        not read back from the Curves JSON and recomputed each time; the rows as before,
+        and the JSON read again only for a file without them."""
+        sk = self.line_arc()
+        b = Bl.make(self.doc, (sk, "Edge1"), (sk, "Edge2"), Continuity="G2")
+        self.doc.recompute()
+        self.assertEqual(len(b.G2Figures), 3)
+        from freecad.elastica import fit
+        with mock.patch.object(fit, "stored_curves", side_effect=fit.stored_curves) as read:
+            rows = Bl.g2_rows(b)
+            self.assertEqual(read.call_count, 0)
+        self.assertIn("drawn: the G2 blend bent from it, 245.54 mm, energy 0.10/mm, "
+                      "2 inflections, max curvature 0.044/mm", rows[0])
+        with mock.patch.object(b, "G2Figures", []):         # a file saved before them
+            self.assertEqual(Bl.g2_rows(b), rows)
+        b.Continuity = "G1"
+        self.doc.recompute()
+        self.assertEqual(list(b.G2Figures), [])
 
     def test_where_the_free_batten_is_about_the_g1_length_it_stays(self):
         """An arc into a line (the free G2 batten 154.4 mm against the G1 solution's 149.4,

@@ -31,7 +31,7 @@ MODES = ["length", "tension"]
 CONTINUITIES = ["G1", "G2"]
 BSPLINE_DEGREE = 5          # a blend's B-spline: few poles at the preference tolerance
 RESULT_LISTS = ("Lengths", "Energies", "Tensions", "Inflections", "Loops", "MaxCurvatures",
-                "Turns", "Descriptions")
+                "Turns", "Descriptions", "G2Figures")
 # what Tension 0 and Length 0 ask at G2 (the tooltips: not always the free batten, F10)
 G2_FREE_TIP = ("G2: the free G2 batten, or where it is a far longer loop than its G1 "
                "solution the fairest G2 blend between the two lengths, which Status names")
@@ -279,6 +279,12 @@ def descriptions(obj):
     return [solution_text(j, *d) for j, d in enumerate(zip(*data, turns))]
 
 
+def g2_figures(pieces):
+    """[bending energy, inflections, largest |curvature|] of a G2 blend's pieces."""
+    return [sum(bending_energy(p) for p in pieces), float(inflections(pieces)),
+            max(float(p.max_curvature) for p in pieces)]
+
+
 def g2_rows(obj):
     """The Solutions rows of a G2 blend, saying what is drawn (QA gui F10: under a 392.6 mm
     G2 result the rows listed the G1 lengths 206.8 and 380.1 mm alone): each row its G1
@@ -288,15 +294,17 @@ def g2_rows(obj):
     rows = descriptions(obj)
     if obj.Continuity != "G2" or not rows or not obj.Curves:
         return rows
-    from .fit import stored_curves
-    try:
-        pieces = stored_curves(obj)[0]
-    except (ValueError, KeyError, TypeError):
-        return rows
-    energy = sum(bending_energy(p) for p in pieces)
-    kmax = max(float(p.max_curvature) for p in pieces)
+    figures = list(getattr(obj, "G2Figures", []))      # stored by apply: not read per refresh
+    if len(figures) != 3:       # a file saved before G2Figures, not recomputed yet
+        from .fit import stored_curves
+        try:
+            pieces = stored_curves(obj)[0]
+        except (ValueError, KeyError, TypeError):
+            return rows
+        figures = g2_figures(pieces)
+    energy, infl, kmax = figures
     drawn = (f"; drawn: the G2 blend bent from it, {length_text(float(obj.BlendLength), 4)}, "
-             f"energy {per_length(energy)}, {plural(inflections(pieces), 'inflection')}, "
+             f"energy {per_length(energy)}, {plural(int(infl), 'inflection')}, "
              f"max curvature {per_length(kmax)}")
     i = obj.Solution - 1
     return [f"G1 {r}" + (drawn if j == i else "") for j, r in enumerate(rows)]
@@ -362,6 +370,9 @@ class BlendProxy(FeatureProxy):
                      "into one turning as many times")
         add_property(obj, "App::PropertyStringList", "Descriptions", "Result",
                      "Every solution in words")
+        add_property(obj, "App::PropertyFloatList", "G2Figures", "Result",
+                     "G2: the blend drawn's bending energy (1/mm), inflections and largest "
+                     "|curvature| (1/mm), as its Solutions row says them; empty for G1")
         if "SpanTensions" in obj.PropertiesList:   # version 1: the G2 end spans' own tensions
             obj.removeProperty("SpanTensions")
         add_property(obj, "App::PropertyVectorList", "GuideDucks", "Result",
@@ -551,6 +562,7 @@ class BlendProxy(FeatureProxy):
         curve_to_dict = binding_module("io").curve_to_dict
         sp = r.get("g2")
         obj.Curves = json.dumps([curve_to_dict(c) for c in (sp.pieces if sp else [curves[i]])])
+        obj.G2Figures = g2_figures(sp.pieces) if sp else []
         plc = r["placement"]
         obj.GuideDucks = to_3d(plc, sp.guides) if sp else []
         obj.GuideForces = [plc.Rotation.multVec(App.Vector(float(x), float(y), 0.0))
