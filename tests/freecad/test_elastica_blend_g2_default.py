@@ -92,6 +92,28 @@ class BlendG2DefaultTest(S.DocTest):
         self.doc.recompute()
         self.assertEqual(list(b.G2Figures), [])
 
+    def test_an_arc_into_an_arc_without_a_free_g2_batten_names_the_lengths(self):
+        """Arc r 30 into arc r 20, 70 mm apart: no free G2 batten (the default, Tension 0)
+        and no G2 battens met by tension, but G2 blends by length: the error named none
+        ('pick another tension or length, or G1'); it names the lengths that solve and
+        says to solve for one, and one of them solves."""
+        sk = self.doc.addObject("Sketcher::SketchObject", "Arcs")
+        sk.addGeometry(Part.ArcOfCircle(Part.Circle(App.Vector(0, 0, 0), App.Vector(0, 0, 1),
+                                                    30), 0, math.radians(90)), False)
+        sk.addGeometry(Part.ArcOfCircle(Part.Circle(App.Vector(120, 0, 0),
+                                                    App.Vector(0, 0, 1), 20),
+                                        math.radians(90), math.radians(180)), False)
+        self.doc.recompute()
+        b = Bl.make(self.doc, (sk, "Edge1"), (sk, "Edge2"), Continuity="G2")
+        self.doc.recompute()
+        self.assertTrue(b.Status.startswith("error: no G2 blend at tension 0"), b.Status)
+        self.assertIn("G2 blends were found at the lengths 105.00 mm, 140.00 mm", b.Status)
+        self.assertIn("Solve for a length and give one of those, or G1", b.Status)
+        b.Mode, b.Length = "length", 105.0
+        self.doc.recompute()
+        self.assertTrue(b.Status.startswith("G2 from solution"), b.Status)
+        self.assertAlmostEqual(b.BlendLength, 105.0, delta=1e-6)
+
     def test_where_the_free_batten_is_about_the_g1_length_it_stays(self):
         """An arc into a line (the free G2 batten 154.4 mm against the G1 solution's 149.4,
         energy x length 5.61, the branch's best no fairer): the free batten."""

@@ -78,7 +78,14 @@ def g2_blend(r, i, mode, value, tol, degree):
         hint = g2_met_hint(getattr(exc, "g2_met", None),
                            lambda t: e.elastic_spline(pts, **ends, tension=t),
                            "give a tension it reached, a length, or G1") \
-            if "tension" in kw else None
+            if "tension" in kw and kw["tension"] > 0.0 else None
+        if kw == {"tension": 0.0}:
+            # the free batten asked (Tension 0, the default): no tension to pull it by, the
+            # lengths that do solve (QA: arc -> arc said "pick another tension or length"
+            # where Length mode has G2 blends of 153 to 404 mm)
+            found = g2_lengths_hint(pts, ends, dist, "Solve for a length and give one "
+                                    "of those, or G1")
+            hint = None if found.startswith("none") else found
         hint = hint or g2_failure_hint(pts, ends, kw, dist)
         # not the exception's words about the spline it keeps: nothing is returned here
         solve = "the batten's solve did not converge" if isinstance(exc, e.NotConvergedError) \
@@ -174,11 +181,12 @@ def g2_by_length(pts, ends, lengths):
     return found
 
 
-def g2_lengths_hint(pts, ends, dist):
+def g2_lengths_hint(pts, ends, dist, action="try one of those, or G1"):
     """What a G2 blend by length that failed (and no free G2 batten) says to try: the
     lengths of G2_REACH_MULTIPLES times ``dist`` (3 digits: typed back, each solves) at
-    which one was found. QA17 M1 (line into an arc 75 mm apart): none at 80 .. 130 mm, the
-    family followed folds at 135.5 mm (an independent shooting solve); 150 .. 300 found."""
+    which one was found, then ``action`` (what to do with them). QA17 M1 (line into an arc
+    75 mm apart): none at 80 .. 130 mm, the family followed folds at 135.5 mm (an
+    independent shooting solve); 150 .. 300 found."""
     lengths = [float(f"{m * dist:.3g}") for m in G2_REACH_MULTIPLES]
     found = [length for length, _ in g2_by_length(pts, ends, lengths)]
     span = (f"{G2_REACH_MULTIPLES[0]:g} to {G2_REACH_MULTIPLES[-1]:g} \u00d7 the "
@@ -186,8 +194,7 @@ def g2_lengths_hint(pts, ends, dist):
     if not found:
         return f"none was found at {span} either: pick a tension, or G1"
     said = ", ".join(length_mark(length, 3) for length in found)
-    return (f"G2 blends were found at the lengths {said} (tried: {span}): "
-            "try one of those, or G1")
+    return f"G2 blends were found at the lengths {said} (tried: {span}): {action}"
 
 
 def g2_tension_reach(pts, ends):
