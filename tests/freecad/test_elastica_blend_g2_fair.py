@@ -77,8 +77,8 @@ class BlendG2FairTest(unittest.TestCase):
         dist = (sk.Shape.Edges[1].valueAt(sk.Shape.Edges[1].LastParameter)
                 - App.Vector(-20, 150, 0)).Length
         said = U.tension_text(b.BlendTension, dist, BG.G2_TENSION_DIGITS)
-        self.assertIn(f"at tension {said}: set Tension to it to keep this curve, a length "
-                      "bends another branch", b.Status)
+        self.assertIn(f"at tension {said}: Tension 0 keeps it, and so does that tension; "
+                      "a Length bends another branch", b.Status)
         self.assertNotIn("give a length", b.Status)
         c0 = b.Shape.Edges[0].Curve
         shape0 = [c0.value(c0.FirstParameter + k / 20 * (c0.LastParameter - c0.FirstParameter))
@@ -156,6 +156,24 @@ class BlendG2FairTest(unittest.TestCase):
             self.assert_g2(sk, b)
             self.doc.removeObject(b.Name)
             self.doc.removeObject(sk.Name)
+
+    def test_a_blend_pushed_together_gives_no_tension_to_type(self):
+        """fairest_by_length does not refuse a blend pushed together (tension < 0): where its
+        best is one, the note said 'at tension -0.00100 1/mm²: set Tension to it', which a
+        G2 Tension refuses (>= 0); it says Tension 0 keeps it, and no tension to type."""
+        from types import SimpleNamespace
+        import numpy as np
+        pts = np.array([[0.0, 0.0], [168.0, 0.0]])
+        pulled = U.tension_text(0.002, 168.0, BG.G2_TENSION_DIGITS)
+        for tension, said in ((-0.001, "pushed together: Tension 0 keeps it (a G2 Tension "
+                                       "cannot be below 0); a Length bends another branch"),
+                              (0.002, f"at tension {pulled}: Tension 0 keeps it, and so does "
+                                      "that tension; a Length bends another branch")):
+            words = U.say(BS.kept_by_tension(pts, SimpleNamespace(length=210.0, tension=tension),
+                                             1.25, 2))
+            self.assertIn(said, words)
+            self.assertNotIn("set Tension", words)
+            self.assertNotIn("-0.001", words)
 
     def test_radius_40_free_batten_stays(self):
         sk, b = self.chain(40.0)

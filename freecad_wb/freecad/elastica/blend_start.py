@@ -68,7 +68,9 @@ def fairest_by_length(pts, ends, sibling):
     LENGTH_MULTIPLES times their distance (3 digits), bent from the G1 solution ``sibling``
     (a SmoothElastica) as a blend by length is: fewest inflections, then the lowest bending
     energy times length. Returns ((inflections, energy x length), multiple, el.ElasticSpline),
-    or None where no length solves."""
+    or None where no length solves. The tension's sign is not checked: a blend pushed
+    together (tension < 0) may be the fairest; its callers guard it (fair_where_no_free
+    refuses it, kept_by_tension gives no tension to type for it, Tension 0 keeps it)."""
     n, e = np(), el()
     dist = float(n.linalg.norm(pts[1] - pts[0]))
     best = None
@@ -113,18 +115,24 @@ def fair_where_no_free(pts, ends, sibling):
 
 def kept_by_tension(pts, sp, m, infl):
     """The note's words for the blend ``sp`` fairest_by_length chose (multiple ``m``,
-    ``infl`` inflections), and how to keep it: its tension, to G2_TENSION_DIGITS digits.
+    ``infl`` inflections), and how to keep it: Tension 0, the default that shows it (each
+    recompute finds it again, as fairer_along's), or its own tension to G2_TENSION_DIGITS
+    digits; where it is pushed together (tension < 0, which fairest_by_length does not
+    refuse) no tension to type (a G2 Tension is >= 0: the box and g2_blend refuse it),
+    Tension 0 alone.
 
-    Why the tension and not the length: a blend by length is bent from the G1 solution OF
-    that length, not from the free one this blend was bent from, and reaches another branch
-    (QA22gui F5, arc radius 25 mm: Length 210 mm, what the panel copies on switching to
-    length mode, gives a 5-inflection blend pushed together, tension -0.00941/mm^2, 4.3 x
-    this one's bending energy); Tension = this blend's 0.00203109/mm^2 gives it again."""
+    Why not the length: a blend by length is bent from the G1 solution OF that length, not
+    from the free one this blend was bent from, and reaches another branch (QA22gui F5, arc
+    radius 25 mm: Length 210 mm, what the panel copies on switching to length mode, gives a
+    5-inflection blend pushed together, tension -0.00941/mm^2, 4.3 x this one's bending
+    energy); Tension = this blend's 0.00203109/mm^2 gives it again."""
     dist = float(np().linalg.norm(pts[1] - pts[0]))
+    keep = (f"at tension {tension_mark(sp.tension, dist, G2_TENSION_DIGITS)}: Tension 0 keeps "
+            "it, and so does that tension" if float(sp.tension) >= 0.0 else
+            "pushed together: Tension 0 keeps it (a G2 Tension cannot be below 0)")
     return (f"the fairest by length, {length_mark(sp.length, 6)} = {m:g} \u00d7 the "
-            f"{length_mark(dist, 4)} between the ends, {plural(infl, 'inflection')}, at "
-            f"tension {tension_mark(sp.tension, dist, G2_TENSION_DIGITS)}: set Tension to it "
-            "to keep this curve, a length bends another branch")
+            f"{length_mark(dist, 4)} between the ends, {plural(infl, 'inflection')}, {keep}; "
+            "a Length bends another branch")
 
 
 def fairer_than_free(pts, ends, sibling, free):
