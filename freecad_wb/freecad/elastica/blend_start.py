@@ -266,10 +266,12 @@ def _refined(probe, best, lo, hi):
     r = 0.5 * (math.sqrt(5.0) - 1.0)
     x1, x2 = hi - r * (hi - lo), lo + r * (hi - lo)
     (f1, g1), (f2, g2) = key(x1), key(x2)
-    for _ in range(ALONG_REFINE):
-        for f, g in ((f1, g1), (f2, g2)):
+    for step in range(ALONG_REFINE + 1):
+        for f, g in ((f1, g1), (f2, g2)):       # the better probe, after each step
             if f < best[0][1]:
                 best = g
+        if step == ALONG_REFINE:
+            return best
         if f1 <= f2:
             hi, x2, f2, g2 = x2, x1, f1, g1
             x1 = hi - r * (hi - lo)
@@ -278,10 +280,6 @@ def _refined(probe, best, lo, hi):
             lo, x1, f1, g1 = x1, x2, f2, g2
             x2 = lo + r * (hi - lo)
             f2, g2 = key(x2)
-    for f, g in ((f1, g1), (f2, g2)):
-        if f < best[0][1]:
-            best = g
-    return best
 
 
 __all__ = ["LENGTH_MULTIPLES", "starting_length", "free_or_length", "fairest_by_length",
