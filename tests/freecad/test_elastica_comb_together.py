@@ -128,7 +128,12 @@ class CombTogetherTest(S.DocTest):
         # the comb of B and C alone, for reference
         ref = Co.make(self.doc, b, ["Edge1"], more=[(c, ["Edge1"])])
         self.doc.recompute()
-        said, _ = S.console_output(lambda: (self.doc.removeObject("A"), self.doc.recompute()))
+        # promoted as A is deleted, before any recompute (it wrote Source and MoreSources
+        # inside the recompute: on main the Source is still empty here)
+        said, _ = S.console_output(lambda: self.doc.removeObject("A"))
+        self.assertEqual((comb.Source[0].Name, list(comb.Source[1])), ("B", ["Edge1"]))
+        self.assertNotIn("Invalid", comb.State)
+        said += S.console_output(self.doc.recompute)[0]
         self.assertIn("its Source was deleted: B, the first of MoreSources, is the Source now",
                       said)
         self.assertEqual(comb.Status, "ok (its Source was deleted: B, the first of "

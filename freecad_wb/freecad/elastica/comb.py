@@ -240,8 +240,7 @@ class CombProxy(FeatureProxy):
 
     def compute(self, obj):
         """comb_core's (teeth per curve, scale); raises InputProblem."""
-        self._promoted = ""
-        if not obj.Source and any(src is not None for src, _ in obj.MoreSources):
+        if self._orphaned(obj):     # a file saved so (onChanged promotes as it is deleted)
             self.promote(obj)
         if not obj.Source:
             raise nothing_read("an Elastica result or some edges", "Source")
@@ -263,10 +262,26 @@ class CombProxy(FeatureProxy):
 
     _promoted = ""      # said in Status after the comb that promote made (report view: at once)
 
+    @staticmethod
+    def _orphaned(obj):
+        return not obj.Source and any(src is not None for src, _ in obj.MoreSources)
+
+    def onChanged(self, obj, prop):
+        """Source emptied by its object's deletion: promote at once, outside a recompute (it
+        wrote Source and MoreSources inside one: the recompute's own inputs changed under
+        it); not as a file is restored or Undo/Redo restores a step (its values are the
+        step's)."""
+        super().onChanged(obj, prop)
+        if prop == "Source" and "Restore" not in obj.State and not obj.Document.Transacting \
+                and not getattr(self, "_executing", False) and \
+                "MoreSources" in obj.PropertiesList and self._orphaned(obj):
+            self.promote(obj)
+
     def promote(self, obj):
         """Source emptied (its object deleted) while MoreSources still holds sources: the first
         of them becomes the Source, the comb recomputed over what remains and said in the
-        report view (review of F5: the comb was in error 'nothing read' with sources left)."""
+        report view (review of F5: the comb was in error 'nothing read' with sources left).
+        Said in Status by the next recompute's apply, once."""
         followed_reader(obj, "MoreSources")     # their names as the geometry they follow now
         left = [(src, tuple(subs)) for src, subs in obj.MoreSources if src is not None]
         (src, subs), rest = left[0], left[1:]
@@ -290,6 +305,7 @@ class CombProxy(FeatureProxy):
         set_shape(obj, Part.makeCompound(shapes))
         obj.UsedScale = scale
         obj.Status = f"ok ({self._promoted})" if self._promoted else "ok"
+        self._promoted = ""         # said once: the next recompute's Status is its own
 
 
 def make(doc, source, subs=(), more=(), **props):
