@@ -241,7 +241,8 @@ def error_line(panel):
             if isinstance(w, kinds)]
     check(box.isAncestorOf(row) and all(row.y() < y for y in tops),
           f"the error line heads the panel ({row.y()} px, fields from {min(tops, default=0)})")
-    return text.text()
+    # as read: units.unbroken's no-break spaces and word joiners (the blend's) plain
+    return text.text().replace("\u00a0", " ").replace("\u2060", "")
 
 
 def select(doc, picks):

@@ -51,7 +51,7 @@ def blend_panel(doc, S):
             panel.tension.minimum() == 0.0 and "guide ducks' forces" in panel.details.text(),
             f"blend: G2 by tension, the tension field from 0 ({b.Status})")
     # one line said, the why on demand (FreeCAD's panels): Details and the tooltip in full
-    line = panel.result.text()
+    line = panel.result.text().replace("\u00a0", " ")     # (units.unbroken's spaces)
     G.check(line.startswith("G2 blend, ") and "<br>" not in line and len(line) < 80
             and panel.details.text().startswith("G2 from solution")
             and panel.result.toolTip() == panel.details.text() and panel.more.isVisible()
@@ -97,7 +97,7 @@ def blend_panel(doc, S):
     panel.continuity.setCurrentIndex(1)         # G2
     G.wait()
     G.check(b.Continuity == "G2" and len(b.GuideDucks) == 2
-            and panel.result.text().startswith("G2 blend, ")
+            and panel.result.text().replace("\u00a0", " ").startswith("G2 blend, ")
             and "G2 from solution" in panel.details.text()
             and abs(b.Shape.Length - 70.0) < 1e-2
             and b.ViewObject.Proxy.overlay_counts() == (2, 2 * 3),

@@ -301,7 +301,7 @@ class BlendPanel(Panel):
         o = self.obj
         if self.error is not None and not (self._input_said or self._ok_said) and \
                 o.Status.startswith("error"):
-            self.error[1].setText(error_line(said_now(o, "Status")))
+            self.error[1].setText(unbroken(error_line(said_now(o, "Status"))))   # '1/mm²' whole
             self.error[1].setToolTip(self.full_text())
         elif self.error is not None:
             self.error[1].setToolTip("")
@@ -349,7 +349,7 @@ class BlendPanel(Panel):
                 "pick one to use it")
 
     def result_text(self):
-        return status_line(self.obj)
+        return unbroken(status_line(self.obj))     # its quantities whole, as the rows
 
     def copy_code(self):
         if not (self.into_sketch.isEnabled() and self.into_sketch.isChecked()):
