@@ -11,6 +11,7 @@ import numpy as np
 import pytest
 
 import libelastica as el
+from near_segments import candidate_segments
 from test_cli import cli
 
 # the QA's 7-click sketch (a clothoid-like run): polygon rms 0.316 / max 0.561, its cubic
@@ -19,12 +20,14 @@ CLICKS = np.array([[0, 0], [30, 0.5], [55, 3], [75, 9], [88, 17], [96, 27], [99,
 
 
 def polyline_distances(points, V):
-    """Each point's distance to the polyline V, every segment looked at."""
+    """Each point's distance to the polyline V, every segment that can hold its nearest point
+    looked at (near_segments: the same minimum as over all of them)."""
     A, D = V[:-1], np.diff(V, axis=0)
     out = []
-    for p in points:
-        t = np.clip(np.sum((p - A) * D, axis=1) / np.sum(D * D, axis=1), 0.0, 1.0)
-        out.append(np.min(np.linalg.norm(p - A - t[:, None] * D, axis=1)))
+    for p, j in zip(points, candidate_segments(points, V)):
+        a, d = A[j], D[j]
+        t = np.clip(np.sum((p - a) * d, axis=1) / np.sum(d * d, axis=1), 0.0, 1.0)
+        out.append(np.min(np.linalg.norm(p - a - t[:, None] * d, axis=1)))
     return np.array(out)
 
 
