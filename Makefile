@@ -86,6 +86,14 @@ $(BUILD)/include/elastica_abi.h: include/elastica.h python/libelastica/_cdef.py 
 	@mkdir -p $(dir $@)
 	$(PYTHON) python/libelastica/_cdef.py --abi include/elastica.h $@
 $(BUILD)/obj/abi.o: $(BUILD)/include/elastica_abi.h
+# EL_BINDING_DIGEST, binding.h's twin of it (el_binding_digest, libelastica/binding.c): the
+# binding calls el_binding_fit only where the library was built from its binding.h.
+# binding.h is binding.c's alone (and the fuzz harness's): a change of it rebuilds that
+# object, not every one (the wildcard below leaves it out).
+$(BUILD)/include/binding_abi.h: libelastica/binding.h python/libelastica/_cdef.py | $(BUILD)/.deps-ok
+	@mkdir -p $(dir $@)
+	$(PYTHON) python/libelastica/_cdef.py --binding-abi libelastica/binding.h $@
+$(BUILD)/obj/binding.o: libelastica/binding.h $(BUILD)/include/binding_abi.h
 
 # The Hermite solver's hot path (its objective, root finding, the elliptic integrals and
 # Jacobi functions under it) at -O3 and with sqrt not setting errno (no libm call per
@@ -118,7 +126,7 @@ FIT_HOT_OBJ := $(addprefix $(BUILD)/obj/,fit_objective.o fit_model.o fit_feet.o 
                discrete.o guess.o guess_spacing.o fit.o fit_choose.o fit_candidate.o jacobi_walk.o fit_pairing.o)
 $(FIT_HOT_OBJ): OPT_CFLAGS := -O3 -fno-math-errno
 
-$(BUILD)/obj/%.o: libelastica/%.c include/elastica.h $(wildcard libelastica/*.h) | $(BUILD)/.deps-ok
+$(BUILD)/obj/%.o: libelastica/%.c include/elastica.h $(filter-out libelastica/binding.h,$(wildcard libelastica/*.h)) | $(BUILD)/.deps-ok
 	@mkdir -p $(dir $@)
 	$(CC) $(CFLAGS_BASE) $(OPT_CFLAGS) $(DEPS_CFLAGS) $(EXTRA_CFLAGS) -c $< -o $@
 

@@ -6,6 +6,10 @@
 
 #include "elastica.h"
 #include "binding.h"
+#include "binding_abi.h" /* EL_BINDING_DIGEST, written by the build (_cdef.py --binding-abi) */
+#include "internal.h"
+
+unsigned long el_binding_digest(void) { return EL_BINDING_DIGEST; }
 
 /* numpy's spacing(m) of m > 0: the gap to the next double above it */
 static double spacing(double m)
@@ -44,6 +48,7 @@ static void distance_figures(const double *d, size_t n, double *figures)
     }
     /* GSL's selection (the k-th smallest, a reordered), as np.partition's place k = n / 2
      * and the largest below it */
+    el__gsl_quiet();          /* (no GSL error is possible here, n >= 4: the rule all the same) */
     const size_t k = n / 2;
     const double upper = gsl_stats_select(a, 1, n, k);
     double mid = upper;

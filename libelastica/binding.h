@@ -2,13 +2,21 @@
  * here and not in elastica.h (C programs call the public functions it is made of). The
  * binding's cdef reads this header after elastica.h (python/libelastica/_cdef.py); its
  * declarations take the public types only, so el_abi_digest (elastica.h's) covers their
- * layout. The library exports it (exports.map: el_ and a letter); a binding that does not
- * find it (an installed elastica.h without this header, an older library) takes the
- * plain path, the same calls one by one. */
+ * layout, and el_binding_digest tells which of this header's versions the library was built
+ * from. The library exports both (exports.map names them): the binding's entry, not an API
+ * (no promise to C programs; fuzzed all the same, fuzz/entries.def). A binding that does not
+ * find them (an installed elastica.h without this header, an older library) or whose
+ * binding.h is another (el_binding_digest not its digest: the arguments would be passed
+ * otherwise than the library reads them) takes the plain path, the same calls one by one. */
 #ifndef EL_BINDING_H
 #define EL_BINDING_H
 
 #include <stddef.h>
+
+/* The CRC-32 of this header's declarations as the binding's cdef takes them
+ * (python/libelastica/_cdef.py --binding-abi, binding_abi.h): el_abi_digest's twin for
+ * this header, which _fit_call.py compares with its own before it calls el_binding_fit. */
+unsigned long el_binding_digest(void);
 
 /*
  * el.fit's work before and after its C fit in one crossing: in turn, what el.fit checks

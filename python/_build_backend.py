@@ -144,6 +144,9 @@ def _build_library(outdir: Path) -> Path:
     # elastica_abi.h: the header's digest, which the library's el_abi_digest returns (abi.c)
     subprocess.run([sys.executable, "-E", str(HERE / PKG / "_cdef.py"), "--abi", str(inc / "elastica.h"),
                     str(objdir / "elastica_abi.h")], check=True)
+    # binding_abi.h: binding.h's, which el_binding_digest returns (binding.c; _fit_call.py)
+    subprocess.run([sys.executable, "-E", str(HERE / PKG / "_cdef.py"), "--binding-abi", str(src / "binding.h"),
+                    str(objdir / "binding_abi.h")], check=True)
     cflags = ["-std=c99", "-O2", "-fPIC", f"-I{inc}", f"-I{src}", f"-I{objdir}"] + _pkg_config("--cflags")
     own = _per_file_cflags(cc)
 

@@ -12,7 +12,8 @@ whether the library was built from the header the binding read.
 
 Standard library only at import (the binding imports it on every start); cffi's parser
 is imported by ``write_module`` alone. As a script, without the package (so without the
-C library): ``python _cdef.py HEADER OUT.py``, ``python _cdef.py --abi HEADER OUT.h``.
+C library): ``python _cdef.py HEADER OUT.py [INTERNAL.h]``, ``python _cdef.py --abi HEADER OUT.h``,
+``python _cdef.py --binding-abi INTERNAL.h OUT.h``.
 """
 from __future__ import annotations
 
@@ -80,12 +81,16 @@ def declarations(header, folders, internal=None):
     return ffi, None, crc
 
 
-def abi_header(header, out) -> None:
+def abi_header(header, out, macro: str = "EL_ABI_DIGEST") -> None:
     """Write elastica_abi.h: EL_ABI_DIGEST, the digest of ``header``'s declarations,
-    which libelastica/abi.c returns from el_abi_digest (the header says how to check)."""
-    Path(out).write_text(f"/* Written by the build (python/libelastica/_cdef.py --abi) from elastica.h. */\n"
-                         f"#ifndef ELASTICA_ABI_H\n#define ELASTICA_ABI_H\n"
-                         f"#define EL_ABI_DIGEST 0x{digest(cdef_text(header)):08x}UL\n#endif\n")
+    which libelastica/abi.c returns from el_abi_digest (the header says how to check);
+    macro EL_BINDING_DIGEST: binding_abi.h, binding.h's, which el_binding_digest returns
+    (libelastica/binding.c; _fit_call.py calls el_binding_fit only where it is binding.h's
+    the binding read)."""
+    guard, flag = ("ELASTICA_ABI_H", "--abi") if macro == "EL_ABI_DIGEST" else ("EL_BINDING_ABI_H", "--binding-abi")
+    Path(out).write_text(f"/* Written by the build (python/libelastica/_cdef.py {flag}) from {Path(header).name}. */\n"
+                         f"#ifndef {guard}\n#define {guard}\n"
+                         f"#define {macro} 0x{digest(cdef_text(header)):08x}UL\n#endif\n")
 
 
 def write_module(header, out, internal=None) -> None:
@@ -111,7 +116,10 @@ def write_module(header, out, internal=None) -> None:
 if __name__ == "__main__":
     if len(sys.argv) == 4 and sys.argv[1] == "--abi":
         abi_header(sys.argv[2], sys.argv[3])
+    elif len(sys.argv) == 4 and sys.argv[1] == "--binding-abi":
+        abi_header(sys.argv[2], sys.argv[3], "EL_BINDING_DIGEST")
     elif len(sys.argv) in (3, 4):
         write_module(sys.argv[1], sys.argv[2], sys.argv[3] if len(sys.argv) == 4 else None)
     else:
-        sys.exit("usage: python _cdef.py HEADER OUT.py [INTERNAL.h] | python _cdef.py --abi HEADER OUT.h")
+        sys.exit("usage: python _cdef.py HEADER OUT.py [INTERNAL.h] | python _cdef.py --abi HEADER OUT.h | "
+                 "python _cdef.py --binding-abi INTERNAL.h OUT.h")

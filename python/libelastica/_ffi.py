@@ -93,8 +93,11 @@ _LIBRARY = _library()
 _HEADER = _header()
 # pre-parsed in the package (wheel), else beside the library (make lib); CDEF_MODULE:
 # the module used, None when the header was parsed (~40 ms more)
+_INTERNAL = _internal(_HEADER)
 ffi, CDEF_MODULE, _DIGEST = _cdef.declarations(_HEADER, [_HERE] + ([Path(_LIBRARY).parent] if _LIBRARY else []),
-                                                _internal(_HEADER))
+                                                _INTERNAL)
+# binding.h's digest (el_binding_digest's where the library was built from it: _fit_call.py)
+BINDING_DIGEST = _cdef.digest(_cdef.cdef_text(_INTERNAL)) if _INTERNAL else None
 lib = _load(ffi, _LIBRARY)
 _check_abi(lib, _HEADER, _LIBRARY, _DIGEST)
 

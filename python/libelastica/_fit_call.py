@@ -6,24 +6,35 @@ _Figures.quick, far_points' outlier test), where the plain path crosses into C f
 and runs numpy over the arrays (bench_fit.py's worker, 1000 points after scipy's fit:
 ~0.3 ms of el.fit's ~1.3, cold caches). Every answer is the plain path's own: where a check
 refuses, or the binding was read without binding.h (an installed elastica.h) or the library
-lacks the entry, :func:`one_call` answers None and el.fit takes the plain path, which says
-why; figures the entry could not compute (NaN) are left to the plain code."""
+lacks the entry or was built from another binding.h (:func:`_entry`), :func:`one_call`
+answers None and el.fit takes the plain path, which says why; figures the entry could not compute (NaN) are left to the plain code."""
 from __future__ import annotations
 
 import math
 
 import numpy as np
 
-from ._ffi import dptr, ffi, lib
+from ._ffi import BINDING_DIGEST, dptr, ffi, lib
 from ._interrupt import call
 from .fit_input import ROUNDING_ULPS
 from .misfit import _Figures
 from .order import SCAN_POINTS, SCREEN_POINTS, ordering
 
-try:
-    _ONE_CALL = lib.el_binding_fit
-except AttributeError:          # not declared (no binding.h) or not in the library
-    _ONE_CALL = None
+
+def _entry(lib, digest):
+    """lib's el_binding_fit where the library was built from the binding.h the binding read
+    (its el_binding_digest is that header's ``digest``), else None: not declared (no
+    binding.h), not in the library (an older one), or another binding.h's (an older or
+    newer library: called with these declarations it would read its arguments otherwise,
+    memory corruption, where the plain path is right with any library of this elastica.h)."""
+    try:
+        fn, built = lib.el_binding_fit, lib.el_binding_digest()
+    except AttributeError:
+        return None
+    return fn if digest is not None and built == digest else None
+
+
+_ONE_CALL = _entry(lib, BINDING_DIGEST)
 
 
 def one_call(pts: np.ndarray, model: str, options):

@@ -11,8 +11,10 @@ import subprocess
 import sys
 from pathlib import Path
 
+import numpy as np
 import pytest
 
+import libelastica as el
 from libelastica import _cdef, _ffi
 
 PACKAGE = Path(_ffi.__file__).resolve().parent
@@ -106,3 +108,33 @@ def test_version_is_the_headers():
     assert macro["STRING"] == f'"{macro["MAJOR"]}.{macro["MINOR"]}.{macro["PATCH"]}"'
     assert el.__version__ == macro["STRING"].strip('"')
     assert _ffi.ffi.string(_ffi.lib.el_version()).decode() == el.__version__
+
+
+ONE_CALL_PROBE = ("import numpy as np, libelastica as el, libelastica._fit_call as f; "
+                  "t = np.linspace(0, 2, 40); P = np.column_stack([t, 0.3 * t * t + 0.01 * np.sin(7 * t)]); "
+                  "print(f._ONE_CALL is not None); print(el.fit(P, check_misfit=False).rms.hex())")
+
+
+@pytest.mark.parametrize("changed", [False, True])
+def test_el_fit_calls_the_entry_of_its_own_binding_h_alone(tmp_path, changed):
+    """el.fit's one call (el_binding_fit, libelastica/binding.h: not in elastica.h, so not
+    under el_abi_digest) only where the library was built from the binding.h the binding
+    read (el_binding_digest, binding.h's CRC-32): a binding.h whose entry takes one argument
+    more (an older or a newer library's) would pass its arguments otherwise than the library
+    reads them; el.fit takes its plain path there, the same fit."""
+    internal = Path(_ffi._internal(str(HEADER)))
+    text = internal.read_text()
+    assert _ffi.lib.el_binding_digest() == _cdef.digest(_cdef.cdef_text(internal)) == _ffi.BINDING_DIGEST
+    if changed:
+        assert text.count("double *figures);") == 1
+        text = text.replace("double *figures);", "double *figures, double extra);")
+    root = binding_with_header(tmp_path, HEADER.read_text())
+    (root / "libelastica" / "binding.h").write_text(text)
+    env = dict(os.environ, LIBELASTICA_PATH=str(LIBRARY), PYTHONPATH=str(root))
+    r = subprocess.run([sys.executable, "-c", ONE_CALL_PROBE], env=env, cwd=root, capture_output=True,
+                       text=True, timeout=120)
+    assert r.returncode == 0, r.stderr
+    called, rms = r.stdout.split()
+    assert called == str(not changed)
+    t = np.linspace(0, 2, 40)
+    assert rms == el.fit(np.column_stack([t, 0.3 * t * t + 0.01 * np.sin(7 * t)]), check_misfit=False).rms.hex()
