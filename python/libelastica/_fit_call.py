@@ -18,7 +18,7 @@ from ._ffi import BINDING_DIGEST, dptr, ffi, lib
 from ._interrupt import call
 from .fit_input import ROUNDING_ULPS
 from .misfit import _Figures
-from .order import SCAN_POINTS, SCREEN_POINTS, ordering
+from .order import _screen_step, ordering
 
 
 def _entry(lib, digest):
@@ -50,7 +50,7 @@ def one_call(pts: np.ndarray, model: str, options):
         o = options(n)
     except (TypeError, AttributeError, ValueError):
         return None
-    step = n // SCREEN_POINTS if n >= SCAN_POINTS else 1       # (order.ordering's screen)
+    step = _screen_step(n)                                       # (order.ordering's screen)
     res = ffi.new(f"el_fit_{model}_result *")
     dist, foot = np.empty(n), np.empty(n)
     sc, figures = ffi.new("el_order_screen_result *"), ffi.new("double[3]")

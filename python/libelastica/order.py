@@ -173,7 +173,7 @@ def ordering(xy, ratio: float = ORDER_RATIO, screen: bool = True, screened=None)
     n = len(xy)
     if n < 3:
         return Ordering(None, polyline_length(xy), float("nan"))
-    step = n // SCREEN_POINTS if screen and n >= SCAN_POINTS else 1
+    step = _screen_step(n) if screen else 1
     # the screen first (every k-th point; no longer than the polyline): a screen within the
     # ratio, or one that turns as a curve does (a coil, a spiral: longer than ratio times
     # its extent however ordered; shuffled points' screen turns ~pi/2 a vertex), answers in
@@ -194,6 +194,13 @@ def ordering(xy, ratio: float = ORDER_RATIO, screen: bool = True, screened=None)
     if screen and given > ratio * along and not _screen(xy, 1, True).turn > TURN_PER_VERTEX:
         return Ordering(None, given, along)
     return Ordering(order if given > ratio * along else None, given, along)
+
+
+def _screen_step(n: int) -> int:
+    """The screen's step on n points: every k-th, about SCREEN_POINTS of them, from
+    SCAN_POINTS points on, else 1 (every point): :func:`ordering`'s, and _fit_call.py's,
+    whose screen ordering then takes as its own (screened=)."""
+    return n // SCREEN_POINTS if n >= SCAN_POINTS else 1
 
 
 def _run_means_turn(xy, step: int) -> float:

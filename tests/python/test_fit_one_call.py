@@ -101,6 +101,19 @@ def cases():
     yield "minus_zero", np.full((5, 2), -0.0), {}
     yield "three", np.array([[0, 0], [1, 1], [2, 0.5]]), {}
     yield "float32", P.astype(np.float32), {}
+    # far from the origin (a survey's coordinates: the rounding test's tolerance 16 ulp of
+    # 1e6), a 1e-6 / 1e6 extent there, Fortran order and a strided view (as_point_array's
+    # copies), 5 points, and the first two points 16 / 17 ulp apart (refused / taken)
+    for scale in (1.0, 1e-6, 1e6):
+        yield f"offset{scale:g}", scale * P + 1e6, {}
+        yield f"offset{scale:g}_s", scale * P + 1e6, dict(model="smooth", param="chord")
+    yield "fortran", np.asfortranarray(P), dict(model="smooth")
+    yield "strided", np.vstack([P, P])[::2], {}
+    yield "five", P[::70][:5], dict(model="smooth")
+    for ulps in (16, 17):
+        E = P[:60] + 1e6
+        E[1] = E[0] + [ulps * np.spacing(float(E.max())), 0.0]
+        yield f"head{ulps}ulp", E, {}
     yield "list", P[:40].tolist(), dict(model="smooth")
 
 
@@ -173,3 +186,30 @@ def test_the_entry_refuses_what_the_plain_path_names():
     assert lib.el_binding_fit(*args[:4], s, *args[5:]) == -1
     assert lib.el_binding_fit(*args[:3], ffi.NULL, ffi.NULL, *args[5:]) == -1
     assert lib.el_binding_fit(*args[:-1], ffi.NULL) == -1
+
+
+def test_two_threads_fit_at_once_as_one_does():
+    """el.fit's one call from two threads at once (the GIL released in the C call, no global
+    state in binding.c): every result the same to the bit as the same fit alone (the
+    warnings' threads are test_warnings_threads.py's)."""
+    import threading
+    rng = np.random.default_rng(7)
+    sets = [(elastica(model, k, n, 1.0, rng, 0.01), model)
+            for model in ("discrete", "smooth") for k, n in ((0.4, 300), (1.2, 500), (3.0, 400))]
+
+    def fit(P, model):
+        return snapshot(el.fit(P, model=model))
+    got = [[None] * len(sets) for _ in range(2)]
+
+    def run(t):
+        for i in (range(len(sets)) if t == 0 else reversed(range(len(sets)))):
+            got[t][i] = fit(*sets[i])
+    with warnings.catch_warnings():         # (process-wide: set here, not in the threads)
+        warnings.simplefilter("ignore")
+        alone = [fit(P, m) for P, m in sets]
+        threads = [threading.Thread(target=run, args=(t,)) for t in range(2)]
+        for t in threads:
+            t.start()
+        for t in threads:
+            t.join()
+    assert got[0] == alone and got[1] == alone
