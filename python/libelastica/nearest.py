@@ -140,15 +140,20 @@ def nearest_samples(data, samples):
 # so the step's turning at the largest curvature counts: max |kappa| x length, the turning
 # of the whole length at its tightest curl, at least its total turning). 257 samples of a
 # k = 0.9 .. 3 elastica of length 40 turning up to 19 rad a step (mu 25 .. 400) missed
-# feet, 0.0337 too far (rel. 0.0016 of its size) at k = 0.999; 33 of a k = 1.8 loop 0.136
+# feet, 0.0337 too far (rel. 0.0016 of its size) at k = 0.999; 33 of a k = 1.8 loop 0.136.
+# At most MAX_SAMPLES (2^16 + 1: the samples 1 MB, the tables 8 MB): a fitted elastica of
+# length 1 at mu = 1e12 asked 4e6 samples (3.2 s and 314 MB for 3 points), at mu = 1e20
+# 4e10 (out of memory). Capped, a distance is still within half a step, length / 2^17, of
+# the true one (|gamma'| = 1: a sample lies that near the foot along the curve).
 CURVE_SAMPLES = 257
 STEP_TURN = 0.5
+MAX_SAMPLES = (1 << 16) + 1
 
 
 def turning_samples(curve) -> int:
     """curve_feet's default sample count for ``curve``: CURVE_SAMPLES, or more where
     max |kappa| x length / STEP_TURN asks (the exact largest curvature of its SmoothElastica
-    pieces, shape.py; of another curve, the largest of 4097 samples)."""
+    pieces, shape.py; of another curve, the largest of 4097 samples), at most MAX_SAMPLES."""
     import math
     from .shape import _piece_max_curvature
     n, L = np(), float(curve.length)
@@ -156,7 +161,10 @@ def turning_samples(curve) -> int:
         kmax = max(_piece_max_curvature(p) for p in getattr(curve, "pieces", [curve]))
     except AttributeError:
         kmax = float(n.max(n.abs(curve.curvature(n.linspace(0.0, L, 4097)))))
-    return max(CURVE_SAMPLES, int(math.ceil(kmax * L / STEP_TURN)) + 1)
+    want = kmax * L / STEP_TURN
+    if not want < MAX_SAMPLES - 1:      # also inf / NaN (int() of them raises)
+        return MAX_SAMPLES
+    return max(CURVE_SAMPLES, int(math.ceil(want)) + 1)
 
 
 def curve_feet(curve, data, samples=None):

@@ -63,10 +63,14 @@ def _piece_max_curvature(p) -> float:
     = k sn), so |kappa| peaks at 2 |k| sqrt(mu) where theta - phi is a whole turn, and
     is otherwise largest at an end (theta's extremes are at the ends and inflections,
     where kappa = 0)."""
-    from .affine import elastica_inflections
+    from .affine import _ellipk, elastica_inflections
     ends = np.abs(p.curvature(np.array([0.0, p.length])))
     if p.k == 0.0:
         return float(ends.max())
+    if abs(p.k) < 1.0 and math.sqrt(p.mu) * p.length >= 2.0 * _ellipk(abs(p.k)):
+        # u spans 2K, so it holds a u = 2jK, |cn| = 1: the peak, without listing the
+        # inflections (sqrt(mu) length / 2K of them: 1e10 at mu = 1e20, length 1)
+        return 2.0 * abs(p.k) * math.sqrt(p.mu)
     theta = p.angle(np.concatenate([[0.0, p.length], elastica_inflections(p, 0.0)]))
     lo, hi = (theta.min() - p.phi) / (2 * math.pi), (theta.max() - p.phi) / (2 * math.pi)
     peak = 2.0 * abs(p.k) * math.sqrt(p.mu) if math.floor(hi) >= math.ceil(lo) else 0.0

@@ -120,3 +120,32 @@ def test_curve_feet_by_default_find_the_feet_of_loops_and_tight_curls(k, mu, off
     # near, it may refine another one's, a little farther)
     brute = _brute_feet(c, q)
     assert np.all(d <= brute + rounding + 1e-12 * size), np.max(d - brute)
+
+
+@pytest.mark.parametrize("mu", [1e12, 1e20])
+def test_curve_feet_default_samples_stay_bounded_on_a_tight_curl(mu):
+    # a k ~ 1 elastica of length 1 at mu = 1e12 asked max |kappa| x length / STEP_TURN = 4e6
+    # samples (314 MB, 3 s for 3 points), at mu = 1e20 4e10 (its exact max |kappa| listed
+    # 1e10 inflections first): capped at MAX_SAMPLES, each distance the foot's own, and
+    # never farther than half a step, length / 2^17, beyond the nearest of 2e5 samples
+    from libelastica.nearest import MAX_SAMPLES, turning_samples
+    c = el.SmoothElastica(x0=5.0, y0=-3.0, phi=0.3, mu=mu, k=0.999, q=0.2, length=1.0)
+    assert c.max_curvature == pytest.approx(2 * 0.999 * np.sqrt(mu), rel=1e-15)
+    assert turning_samples(c) == MAX_SAMPLES
+    rng = np.random.default_rng(2)
+    q = c.points(rng.uniform(0, 1, 20)) + rng.normal(0, 1e-3, (20, 2))
+    d, s = curve_feet(c, q)
+    assert np.allclose(np.linalg.norm(c.points(s) - q, axis=1), d, rtol=0, atol=1e-13)
+    dense = c.points(np.linspace(0.0, 1.0, 200001))
+    near = np.array([np.sqrt(((dense - p) ** 2).sum(axis=1).min()) for p in q])
+    assert np.all(d <= near + 0.5 / (MAX_SAMPLES - 1) + 1e-13), np.max(d - near)
+
+
+@pytest.mark.parametrize("k", [0.1, 0.5, 0.9, 0.999999, -0.7])
+@pytest.mark.parametrize("length", [0.5, 3.0, 7.0, 40.0])
+def test_max_curvature_the_same_with_or_without_listing_the_inflections(k, length):
+    # the peak 2 |k| sqrt(mu) taken where u spans 2K is the largest of a dense sampling
+    c = el.SmoothElastica(x0=0, y0=0, phi=0.1, mu=2.0, k=k, q=0.4, length=length)
+    dense = np.abs(c.curvature(np.linspace(0.0, length, 200001))).max()
+    assert dense <= c.max_curvature * (1 + 1e-12)
+    assert c.max_curvature <= dense + 2.0 * np.sqrt(2.0) * (length / 2e5) ** 2 * 2.0
