@@ -5,9 +5,8 @@ that solve, the highest tension one was found at. blend_start.py finds the faire
 where the free batten is a snake or missing."""
 from __future__ import annotations
 
-import warnings
 
-from .geometry import el, np, plane_curvature
+from .geometry import binding_module, el, np, plane_curvature
 from .proxy import InputProblem
 from .spline_solve import g2_met_hint, g2_solves
 from .units import (floor_digits, length_mark, per_area_mark, per_length_mark, reach_mark,
@@ -162,9 +161,7 @@ def quiet_g2(pts, ends, **by):
     """el.elastic_spline(pts, **ends, **by) for a probe (the lengths an error lists, where G2
     starts): its LoopWarning / UnstableWarning were red report-view lines (QA23gui s2)."""
     e = el()
-    with warnings.catch_warnings():
-        warnings.simplefilter("ignore", e.LoopWarning)
-        warnings.simplefilter("ignore", e.UnstableWarning)
+    with binding_module("_quiet").quiet(e.LoopWarning, e.UnstableWarning):   # this thread's
         return e.elastic_spline(pts, **ends, **by)
 
 

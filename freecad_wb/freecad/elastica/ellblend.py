@@ -14,13 +14,12 @@ report view when they change."""
 from __future__ import annotations
 
 import math
-import warnings
 
 import FreeCAD as App
 
 from . import defaults
 from .containers import set_shape
-from .geometry import el, ends_meet, np, part_bspline, plane_coordinates, to_3d
+from .geometry import binding_module, el, ends_meet, np, part_bspline, plane_coordinates, to_3d
 from .links import followed_reader
 from .proxy import (FeatureProxy, InputProblem, add_enum, add_geometry_index, add_length, add_link,
                     add_property, check_number, check_tolerance, new_feature, read_only, set_said,
@@ -97,9 +96,8 @@ def ellblend_core(points, plane=None, mode="interpolate", k=0.5, d=2.0, tol=1e-3
     try:
         xy, plane = plane_coordinates(points, plane, flat=1e-6, what="points")
         kw = {"k": float(k)} if convention == "modulus" else {"m": float(k)}
-        with warnings.catch_warnings():     # in curve.warnings(), said once by the feature
-            warnings.simplefilter("ignore", el().ConditionWarning)
-            warnings.simplefilter("ignore", el().BlendLoopWarning)
+        # in curve.warnings(), said once by the feature (this thread's only: _quiet.py)
+        with binding_module("_quiet").quiet(el().ConditionWarning, el().BlendLoopWarning):
             curve = el().blend_curve(np().ascontiguousarray(xy), d=float(d), mode=mode,
                                      closed=bool(closed), **kw)
         bs = curve.to_bspline(float(tol))

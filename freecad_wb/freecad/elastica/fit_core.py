@@ -7,7 +7,6 @@ the points' distances to the curve drawn (fit_shape.py's B-spline)."""
 from __future__ import annotations
 
 import math
-from warnings import catch_warnings, simplefilter
 
 import FreeCAD as App
 
@@ -272,11 +271,11 @@ def _keyline(xy, model, step):
     each by its recursion to its end point's foot (KeylineFit.ends). Returned with the
     sparse verdict of fit_keyline (KeylineFit.sparse: the smooth keyline's rms, or None)."""
     n = np()
-    with catch_warnings():                           # its Status says it
-        simplefilter("ignore", el().ConvergenceWarning)
-        simplefilter("ignore", el().OrderWarning)    # ordered by fit_core (file_order, curve_order)
-        simplefilter("ignore", el().MisfitWarning)   # fit_core's _misfit says it
-        simplefilter("ignore", el().SparseWarning)   # fit_core's _coarse_keyline says it (kf.sparse)
+    # its Status says a ConvergenceWarning; ordered by fit_core (file_order, curve_order);
+    # fit_core's _misfit says a MisfitWarning, _coarse_keyline a SparseWarning (kf.sparse)
+    e = el()
+    with binding_module("_quiet").quiet(e.ConvergenceWarning, e.OrderWarning, e.MisfitWarning,
+                                        e.SparseWarning):
         kf = el().fit_keyline(xy, r=step, model=model)
     first, second = kf.first, kf.second
     to_plane = kf.to_input                           # the sides' results live in x''y''

@@ -9,13 +9,12 @@ curvature jump where it closes."""
 from __future__ import annotations
 
 import math
-import warnings
 
 import FreeCAD as App
 import Part
 
 from .containers import set_shape
-from .geometry import bspline_edges, el, np, plane_coordinates, plane_curvature, to_3d
+from .geometry import binding_module, bspline_edges, el, np, plane_coordinates, plane_curvature, to_3d
 from .links import followed_reader
 from .proxy import (FeatureProxy, InputProblem, ShapeProblem, add_geometry_index, add_link,
                     add_property, new_feature, read_only, set_said, source_list)
@@ -277,18 +276,14 @@ def _g2quad(edges, plane, n, samples=None, closed=False):
                 xy, tan, kseam = _closed(edges, pts, xy, tan, plane)
         else:
             xy, tan, kseam = samples
-        with warnings.catch_warnings(record=True) as said:   # g2quad_core says what is left out
-            warnings.simplefilter("ignore", el().CoverageWarning)
-            # (an end tangent not held: its figure is SourceEndTangentError's)
-            warnings.simplefilter("ignore", el().EndTangentWarning)
-            warnings.simplefilter("always", el().StrayWarning)
+        # g2quad_core says what is left out (an end tangent not held: its figure is
+        # SourceEndTangentError's), the StrayWarning in the Status (stray_status); this
+        # thread's warnings only (_quiet.py), the others said at this line as before
+        quiet = binding_module("_quiet").quiet
+        with quiet(el().CoverageWarning, el().EndTangentWarning), \
+                quiet(el().StrayWarning, into=[]) as said:
             g = el().g2_quadratic(xy, n, tangents=tan, partial=True, end_curvatures=kseam)
-        stray = None
-        for w in said:      # the StrayWarning said in the Status (stray_status), others again
-            if isinstance(w.message, el().StrayWarning):
-                stray = w.message
-            else:
-                warnings.warn_explicit(w.message, w.category, w.filename, w.lineno)
+        stray = said[-1] if said else None
     except InputProblem:
         raise
     except el().DomainError as exc:

@@ -10,7 +10,6 @@ from __future__ import annotations
 
 import json
 import math
-import warnings
 
 import FreeCAD as App
 
@@ -324,9 +323,7 @@ def kept_shown(xy, tension, specs, sp, curves, length, shown_tension, switched=F
     if shown_tension != tension:
         return sp, "", ""
     try:
-        with warnings.catch_warnings():   # a looping or unstable spline: noted by spline_core
-            warnings.simplefilter("ignore", e.LoopWarning)
-            warnings.simplefilter("ignore", e.UnstableWarning)
+        with binding_module("_quiet").quiet(e.LoopWarning, e.UnstableWarning):   # spline_core notes them
             kept = e.elastic_spline(xy, tension=tension, start=specs[0], end=specs[1],
                                     initial=pieces)
     except (ValueError, ArithmeticError, RuntimeError, e.ElasticaError):
@@ -351,9 +348,7 @@ def followed_kept(xy, tension, specs, sp, length):
     278.02 mm. Where either solve fails, the library's own (``sp``) is shown and said."""
     e = el()
     try:
-        with warnings.catch_warnings():   # a looping or unstable spline: noted by spline_core
-            warnings.simplefilter("ignore", e.LoopWarning)
-            warnings.simplefilter("ignore", e.UnstableWarning)
+        with binding_module("_quiet").quiet(e.LoopWarning, e.UnstableWarning):   # spline_core notes them
             by_length = e.elastic_spline(xy, length=length, start=specs[0], end=specs[1])
             kept = e.elastic_spline(xy, tension=tension, start=specs[0], end=specs[1],
                                     initial=by_length.pieces)

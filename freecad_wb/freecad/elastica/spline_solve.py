@@ -7,7 +7,6 @@ from __future__ import annotations
 
 import math
 import re
-import warnings
 
 from .geometry import binding_module, el
 from .proxy import InputProblem, ShapeProblem
@@ -118,9 +117,7 @@ def _solve(xy, mode, value, closed, start, end, max_iter=MAX_ITER):
     largest = met = None
 
     def solve(**by):
-        with warnings.catch_warnings():   # a looping or unstable spline: noted by spline_core
-            warnings.simplefilter("ignore", e.LoopWarning)
-            warnings.simplefilter("ignore", e.UnstableWarning)
+        with binding_module("_quiet").quiet(e.LoopWarning, e.UnstableWarning):   # spline_core notes them
             return e.elastic_spline(xy, start=start, end=end, closed=closed, max_iter=max_iter, **by)
 
     try:
