@@ -45,5 +45,10 @@ def say(message, category=UserWarning, stacklevel: int = 1) -> None:
 
 
 def quieted(category) -> bool:
-    """Whether a :func:`quiet` scope of this thread takes warnings of ``category``."""
-    return any(issubclass(category, cats) for cats, _ in _SCOPES.get())
+    """Whether :func:`say` drops warnings of ``category`` in this thread: the innermost
+    :func:`quiet` scope that takes them has no list (one that collects them says them,
+    there: their text in full, as a recording catch_warnings had it)."""
+    for cats, into in reversed(_SCOPES.get()):
+        if issubclass(category, cats):
+            return into is None
+    return False

@@ -77,3 +77,22 @@ def test_a_quiet_scope_drops_or_collects_its_categories_only():
         say("e", el.SparseWarning)                          # outside: said
     assert none is None and [str(w) for w in kept] == ["b", "c"]
     assert [(str(w.message), w.filename) for w in said] == [("d", __file__), ("e", __file__)]
+
+
+def test_a_collecting_scope_gets_the_text_the_caller_would_see():
+    # quieted() answered True for a scope that collects (into=): elastic_spline then spared
+    # the ladder of tensions above and collected its short advice ('a larger tension may
+    # give one'), not the one a recording catch_warnings had and a caller sees; an inner
+    # collecting scope decides over an outer one that drops
+    pts = np.array([[0.0, 0.0], [1.0, 0.0], [0.5, 0.01], [2.0, 0.0]])
+    with warnings.catch_warnings(record=True) as seen:
+        warnings.simplefilter("always")
+        el.elastic_spline(pts, tension=1e-3)
+    shown = [str(w.message) for w in seen if w.category is el.LoopWarning]
+    assert len(shown) == 1 and "a larger tension may give one" not in shown[0], shown
+    with quiet(el.LoopWarning, into=[]) as got:
+        el.elastic_spline(pts, tension=1e-3)
+    assert [str(w) for w in got] == shown
+    with quiet(), quiet(el.LoopWarning, into=[]) as got:
+        el.elastic_spline(pts, tension=1e-3)
+    assert [str(w) for w in got] == shown
