@@ -80,21 +80,24 @@ class ResampledFit(ValueEquality):
         return self._curve_d().copy()
 
     def _curve_d(self) -> np.ndarray:
-        """:meth:`curve_distances`, measured once (kept in the instance's ``__dict__``,
-        beside the frozen fields: not pickled, not compared), shared by curve_rms and
-        curve_max_error."""
-        d = self.__dict__.get("_curve_distances")
-        if d is None:
-            d = self.__dict__["_curve_distances"] = self._measured_curve_distances()
-        return d
+        """:meth:`curve_distances`, measured once for the curve's parameters and the points
+        as they are (kept in the instance's ``__dict__`` beside the frozen fields: not
+        pickled, not compared; the curve and the points array are mutable: measured again
+        where either changed), shared by curve_rms and curve_max_error."""
+        from dataclasses import astuple
+        from .core import DiscreteElastica
+        if not isinstance(self.curve, DiscreteElastica):
+            return self.distances           # a smooth fit's: its B-spline's, as measured
+        key = (type(self.curve), astuple(self.curve), self.points.tobytes())
+        kept = self.__dict__.get("_curve_distances")
+        if kept is None or kept[0] != key:
+            kept = self.__dict__["_curve_distances"] = (key, self._measured_curve_distances())
+        return kept[1]
 
     def __getstate__(self):
         return {k: v for k, v in vars(self).items() if k != "_curve_distances"}
 
     def _measured_curve_distances(self) -> np.ndarray:
-        from .core import DiscreteElastica
-        if not isinstance(self.curve, DiscreteElastica):
-            return self.distances.copy()
         from .report import closest_points
         poly = self.curve.points()
         feet, seg = closest_points(self.points, poly, segments=True)
