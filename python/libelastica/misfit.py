@@ -323,10 +323,14 @@ def _followed(A: np.ndarray, c: np.ndarray, x: np.ndarray, noise: float) -> np.n
     (1.36 for 0.105)."""
     xs = np.maximum(np.abs(x).max(axis=1), np.finfo(float).tiny)
     t = A[:, :, 1]
-    d1 = (c[:, [1]] + 2 * c[:, [2]] * t + 3 * c[:, [3]] * t * t) / xs[:, None]
-    d2 = (2 * c[:, [2]] + 6 * c[:, [3]] * t) / (xs * xs)[:, None]
-    kappa = np.max(np.abs(d2) / (1 + d1 * d1) ** 1.5, axis=1)
-    q = (kappa ** 3 / 8)[:, None] * x ** 4
+    # in the window's own units (c / xs, kappa xs): kappa^3 x^4 / 8 = (kappa xs)^3 xs t^4 / 8,
+    # which neither x^4 nor kappa^3 overflows or underflows (points at 1e150: x^4 = inf,
+    # kappa^3 = 0, q NaN and numpy's overflow / invalid RuntimeWarnings, no window followed)
+    cs = c / xs[:, None]
+    d1 = cs[:, [1]] + 2 * cs[:, [2]] * t + 3 * cs[:, [3]] * t * t
+    h = np.hypot(1.0, d1)
+    kx = np.max(np.abs(2 * cs[:, [2]] + 6 * cs[:, [3]] * t) / h / h / h, axis=1)
+    q = (kx ** 3 / 8 * xs)[:, None] * t ** 4
     AtA = np.einsum("kmi,kmj->kij", A, A)
     beta = np.linalg.solve(AtA, np.einsum("kmi,km->ki", A, q)[..., None])[..., 0]
     shape = np.sum((q - np.einsum("kmi,ki->km", A, beta)) ** 2, axis=1) / (A.shape[1] - 4)

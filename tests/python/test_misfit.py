@@ -446,3 +446,25 @@ def test_split_hint_is_silent_where_it_has_nothing_to_add():
     assert el.split_hint(r.points, r.distances) is None
     with pytest.raises(ValueError):
         el.split_hint(P, r.distances[:-1])
+
+
+@pytest.mark.parametrize("scale", [1e-150, 1e150])
+def test_window_noise_scales_with_the_points_without_numpy_warnings(scale):
+    # _followed's quartic term kappa^3 x^4 / 8 in the points' units: at 1e150 x^4 was inf,
+    # kappa^3 0, every window NaN (numpy's overflow / invalid RuntimeWarnings, which since
+    # the binding's quiet scopes are this thread's own reached fit_keyline's caller), no
+    # window followed and the noise figure 0; now the same figure in the points' units
+    from libelastica.misfit import window_noise
+    rng = np.random.default_rng(3)
+    t = np.linspace(0.0, 1.0, 60)
+    pts = np.c_[100 * t, 15 * np.sin(2.5 * np.pi * t)] + rng.normal(0, 0.8, (60, 2))
+    pts[20] += (0.0, 30.0)
+    one = window_noise(pts)
+    assert one > 0.0
+    with warnings.catch_warnings(record=True) as seen:
+        warnings.simplefilter("always")
+        assert window_noise(pts * scale) / scale == pytest.approx(one, rel=1e-12)
+        for model in ("discrete", "smooth"):
+            el.fit_keyline(pts * scale, model=model)
+    # the binding's own (MisfitWarning ... subclass RuntimeWarning) may be said; numpy's not
+    assert [str(w.message) for w in seen if w.category is RuntimeWarning] == []
