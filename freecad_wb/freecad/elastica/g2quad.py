@@ -26,6 +26,13 @@ SAMPLES_PER_VERTEX = 20     # seed 002 §4.2: |p| ~ 20 |x|
 # tangents (radians): a sketch's periodic B-spline or circle meets itself ~1e-12 apart
 SEAM_SMOOTH = 1e-7
 LEFT_OUT_MARGIN = 3         # g2quad_core's search: counts judged without their own samples
+# g2quad_core's searches for a count that builds or covers (el.covering_edges: every count
+# n+1 .. 4n) sample the source anew at each count tried, SAMPLES_PER_VERTEX x m samples, each
+# an OCC projection onto the edge (sample_chain: ~0.2-1 ms on a 300-pole B-spline), and
+# build it: at Edges = 100 a search may try 300 counts, 1.5 million samples, minutes (QA saw
+# a recompute of a hand-drawn source run past 500 s). It stops after this many samples in
+# all (the whole 24-edge search, to 96, takes 86 000) and says so, its Edges to edit.
+SEARCH_SAMPLES = 200_000
 
 
 def g2quad_core(edges, plane=None, nedges=24):
@@ -75,6 +82,7 @@ def g2quad_core(edges, plane=None, nedges=24):
                 return True
             try:
                 if m not in sampled:
+                    budget.spend(m)
                     sampled[m] = _chain_samples(edges, plane, m, closed)
                 xy, tan = sampled[m][:2]
                 ends = el().affine_end_pieces(xy, tan)
@@ -84,9 +92,18 @@ def g2quad_core(edges, plane=None, nedges=24):
                 needed[0] = ends.n_both
             return el().g2quad.end_piece_left_out(ends, m, len(xy))
 
-        more = el().covering_edges(lambda m: _g2quad(edges, plane, m, sampled.pop(m, None),
-                                                     closed)[0],
-                                   n, errors=(InputProblem,), leaves_out=leaves_out)
+        budget = _Budget()
+
+        def build(m):
+            if m not in sampled:
+                budget.spend(m)
+            return _g2quad(edges, plane, m, sampled.pop(m, None), closed)[0]
+        try:
+            more = el().covering_edges(build, n, errors=(InputProblem,), leaves_out=leaves_out)
+        except _SearchStopped as stop:
+            raise EdgesProblem(
+                f"Edges = {n} leaves out {gone} of the source beyond an inflection (too short "
+                f"for 3 edges): {stop.said(n, 'covers')}") from None
         ends = " and ".join(f"{length_mark(d, 4)} from its {w}"
                             for d, w in zip(g.dropped, ("start", "end")) if d > 0)
         need = (f" (its samples at Edges = {top} keep that end piece from Edges = {needed[0]} "
@@ -110,6 +127,36 @@ class EdgesProblem(ShapeProblem):
     refused in a 'Wrong selection' box whose advice, more edges, had no box to go in)."""
 
 
+class _SearchStopped(Exception):
+    """A search (g2quad_core, _more_edges) stopped at count ``at``: SEARCH_SAMPLES spent."""
+
+    def __init__(self, at):
+        super().__init__(at)
+        self.at = at
+
+    def said(self, n, what):
+        """Why the search from n stopped, ``what`` (builds, covers) no count tried did."""
+        tried = (f"no count from {n + 1} to {self.at - 1} {what} it; " if self.at > n + 1
+                 else "")
+        return (f"{tried}the search stopped at Edges = {self.at} ({SEARCH_SAMPLES} samples "
+                f"of the source in all, {SAMPLES_PER_VERTEX} per edge of each count tried: a "
+                f"recompute would run on for minutes): type Edges = {self.at} or more")
+
+
+class _Budget:
+    """The samples a search may still take (SEARCH_SAMPLES): spend(m) before sampling at m
+    edges, raising _SearchStopped(m) when they run out."""
+
+    def __init__(self):
+        self.left = SEARCH_SAMPLES
+
+    def spend(self, m):
+        need = SAMPLES_PER_VERTEX * int(m)
+        if need > self.left:
+            raise _SearchStopped(int(m))
+        self.left -= need
+
+
 class _NoPolyline(InputProblem):
     """No affine arc-length polyline at this count (_g2quad): a straight stretch, or turns
     that need more edges (_more_edges tells them apart)."""
@@ -126,8 +173,17 @@ def _more_edges(exc, edges, plane, n, closed):
         _g2quad(edges, plane, top, closed=closed)
     except InputProblem:
         return exc
-    more = el().covering_edges(lambda m: _g2quad(edges, plane, m, closed=closed)[0], n,
-                               errors=(InputProblem,))
+    budget = _Budget()
+
+    def build(m):
+        budget.spend(m)
+        return _g2quad(edges, plane, m, closed=closed)[0]
+    try:
+        more = el().covering_edges(build, n, errors=(InputProblem,))
+    except _SearchStopped as stop:
+        return EdgesProblem(f"no G2 quadratic B-spline with Edges = {n}: its turns need more "
+                            f"edges (about 3 per turn of the tangent), Edges = {top} builds "
+                            f"it: {stop.said(n, 'builds')}")
     if more is None:
         return exc
     return EdgesProblem(f"no G2 quadratic B-spline with Edges = {n}: its turns need more "
