@@ -375,9 +375,67 @@ def ok_on_a_source_broken_since():
     App.closeDocument(doc.Name)
 
 
+class _Stderr:
+    """sys.stderr's text while active (a Traceback of a queued Qt call goes there, and so
+    to the report view)."""
+
+    def __enter__(self):
+        import sys
+        self.text, self.saved = [], sys.stderr
+        outer = self
+
+        class _Tee:
+            def write(self, t):
+                outer.text.append(t)
+                return outer.saved.write(t)
+
+            def flush(self):
+                outer.saved.flush()
+        sys.stderr = _Tee()
+        return self
+
+    def __exit__(self, *exc):
+        import sys
+        sys.stderr = self.saved
+
+
+def dropped_by_close_dialog():
+    """Gui.Control.closeDialog() (a macro, the console) closes a new Fit's panel without
+    OK or Cancel: the panel lets go of the document (its observer, CURRENT, the edit), the
+    feature kept, said once; a recompute after it printed a Traceback (show_error on a
+    deleted QLabel: the observer stayed, revR)."""
+    from freecad.elastica import taskpanels as T
+    doc, sk = fit_doc("ElasticaDropped")
+    panel = run_fit(doc, sk)
+    G.check(panel is not None, "a Fit's panel opens")
+    warned, saved = [], App.Console.PrintWarning
+    App.Console.PrintWarning = lambda text: warned.append(text)
+    try:
+        with _Stderr() as err:
+            Gui.Control.closeDialog()
+            G.wait()
+            g = sk.Geometry[3]
+            sk.movePoint(3, 1, App.Vector(g.X + 1.0, g.Y, 0))
+            doc.recompute()
+            G.wait()
+    finally:
+        App.Console.PrintWarning = saved
+    G.screenshot("gui_dropped_panel.png")
+    names = [o.Name for o in doc.Objects]
+    said = [t for t in warned if "without OK or Cancel" in t]
+    G.check("Traceback" not in "".join(err.text) and not T.CURRENT and
+            Gui.ActiveDocument.getInEdit() is None and names == ["Points", "ElasticaFit"] and
+            len(said) == 1 and not doc.HasPendingTransaction,
+            f"a panel closed by closeDialog lets go: no Traceback at the next recompute "
+            f"({''.join(err.text)[-300:]!r}), not current ({T.CURRENT}), not in edit, the "
+            f"feature kept ({names}), said once ({said})")
+    App.closeDocument(doc.Name)
+
+
 def run_all(smoke):
     global G
     G = smoke
+    dropped_by_close_dialog()
     ok_that_fails()
     ok_fails_then_ok()
     ok_on_a_source_broken_since()

@@ -116,6 +116,8 @@ class Panel(ExpressionFields):
         self.warning = None             # the warning line, when the panel has one
         self.form = []
         self.build()
+        for w in self.form[:1]:     # its dialog closed by closeDialog (dropped)
+            w.destroyed.connect(self.dropped)
         self.refresh()
         self.refit()
 
@@ -602,6 +604,37 @@ class Panel(ExpressionFields):
             App.Console.PrintWarning(f"Elastica: {self.name}: {self.gone or 'undone or deleted'}; "
                                      "its panel closes\n")
             self._close()
+
+    def dropped(self, *_):
+        """Its widgets deleted, not by OK, Cancel or its edit ending (``lost``):
+        Gui.Control.closeDialog() from a macro or the console closed its dialog. Its
+        document observer stayed, and the next recompute's refresh touched a deleted QLabel
+        (a Traceback in the report view, revR): the panel lets go of the document now
+        (_let_go, queued: no call into FreeCAD while it deletes the dialog)."""
+        if self.closing or self.gone:
+            return
+        self.closing = True
+        self.timer.stop()
+        QtCore.QTimer.singleShot(0, self._let_go)
+
+    def _let_go(self):
+        """After ``dropped``: no observer, not CURRENT, its edit ended; the feature kept as
+        the dialog left it, its edits one Undo step (committed), as said in the report view."""
+        try:
+            App.removeDocumentObserver(self.watch)
+        except Exception:  # already removed
+            pass
+        if CURRENT and CURRENT[0] is self:
+            CURRENT[:] = []
+        if self.doc_name not in App.listDocuments():
+            return
+        App.Console.PrintWarning(f"Elastica: {self.name}: its panel closed without OK or "
+                                 "Cancel; the feature kept as it is\n")
+        if self.doc.HasPendingTransaction:
+            self.doc.commitTransaction()
+        gdoc = Gui.getDocument(self.doc_name)
+        if gdoc is not None and gdoc.getInEdit() is not None:
+            gdoc.resetEdit()
 
     def accept(self):
         if self.gone or self.name not in [o.Name for o in self.doc.Objects]:
