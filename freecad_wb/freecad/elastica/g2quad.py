@@ -31,8 +31,9 @@ LEFT_OUT_MARGIN = 3         # g2quad_core's search: counts judged without their 
 # an OCC projection onto the edge (sample_chain: ~0.2-1 ms on a 300-pole B-spline), and
 # build it: at Edges = 100 a search may try 300 counts, 1.5 million samples, minutes (QA saw
 # a recompute of a hand-drawn source run past 500 s). It stops after this many samples in
-# all (the whole 24-edge search, to 96, takes 86 000) and says so, its Edges to edit.
-SEARCH_SAMPLES = 200_000
+# all (the whole 24-edge search, to 96, takes 87 120; 100 000 at 0.2-0.9 ms: 20-90 s) and
+# says so, its Edges to edit.
+SEARCH_SAMPLES = 100_000
 
 
 def g2quad_core(edges, plane=None, nedges=24):
