@@ -148,3 +148,38 @@ class CombTogetherTest(S.DocTest):
         self.assertEqual(comb.Status, "ok")
         # the last source deleted too, and C's: nothing left is still the error it was
         self.assertEqual(S.status_once_deleted(comb, b, c).split(":")[0], "error")
+
+    def test_a_deletion_undone_before_a_recompute_says_nothing_of_it(self):
+        """The Source's object deleted (promote: B the Source, said at once), then Undo before
+        any recompute: Source and MoreSources are the step's again (A; B, C) and the next
+        recompute's Status is 'ok', not 'ok (its Source was deleted: B ...)' of a deletion
+        undone (review revT: promote's note outlived the Undo)."""
+        self.doc.UndoMode = 1
+        sks = []
+        for name, y, rise in (("A", 0.0, 5.0), ("B", 100.0, 10.0), ("C", 200.0, 3.0)):
+            sk = self.doc.addObject("Sketcher::SketchObject", name)
+            sk.addGeometry(Part.ArcOfCircle(App.Vector(0, y, 0), App.Vector(25, y + rise, 0),
+                                            App.Vector(50, y, 0)), False)
+            sks.append(sk)
+        a, b, c = sks
+        self.doc.recompute()
+        comb = Co.make(self.doc, a, ["Edge1"], more=[(b, ["Edge1"]), (c, ["Edge1"])])
+        self.doc.recompute()
+        self.assertEqual(comb.Status, "ok")
+        self.doc.openTransaction("Delete")
+        self.doc.removeObject("A")
+        self.doc.commitTransaction()
+        self.assertEqual(comb.Source[0].Name, "B")
+        self.doc.undo()
+        self.assertEqual((comb.Source[0].Name, list(comb.Source[1])), ("A", ["Edge1"]))
+        self.assertEqual([(o.Name, list(s)) for o, s in comb.MoreSources],
+                         [("B", ["Edge1"]), ("C", ["Edge1"])])
+        self.doc.recompute()
+        self.assertEqual(comb.Status, "ok")
+        self.assertEqual(comb.State, ["Up-to-date"])
+        # Redo: B the Source again, the step's values; the deletion was said as it was done
+        self.doc.redo()
+        self.assertEqual((comb.Source[0].Name, list(comb.Source[1])), ("B", ["Edge1"]))
+        self.doc.recompute()
+        self.assertEqual(comb.State, ["Up-to-date"])
+        self.assertEqual([(o.Name, list(s)) for o, s in comb.MoreSources], [("C", ["Edge1"])])

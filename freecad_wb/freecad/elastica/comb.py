@@ -270,8 +270,10 @@ class CombProxy(FeatureProxy):
         """Source emptied by its object's deletion: promote at once, outside a recompute (it
         wrote Source and MoreSources inside one: the recompute's own inputs changed under
         it); not as a file is restored or Undo/Redo restores a step (its values are the
-        step's)."""
+        step's, and what a promote undone would have said in Status is forgotten)."""
         super().onChanged(obj, prop)
+        if prop in ("Source", "MoreSources") and obj.Document.Transacting:
+            self._promoted = ""     # Undo/Redo: the step's sources; a promote undone is not said
         if prop == "Source" and "Restore" not in obj.State and not obj.Document.Transacting \
                 and not getattr(self, "_executing", False) and \
                 "MoreSources" in obj.PropertiesList and self._orphaned(obj):
