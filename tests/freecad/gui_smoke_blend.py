@@ -103,12 +103,23 @@ def blend_panel(doc, S):
             and b.ViewObject.Proxy.overlay_counts() == (2, 2 * 3),
             f"blend: G2 from the chosen solution at the typed length, guide ducks drawn ({b.Status})")
     rows = [panel.list.item(r).text() for r in range(panel.list.count())]
-    G.check(rows and all(r.startswith("G1") for r in rows) and
-            sum("drawn: G2" in r for r in rows) == 1 and
-            "drawn: G2" in rows[b.Solution - 1] and "drawn: the G2 blend bent from it" in
-            panel.list.item(b.Solution - 1).toolTip().replace("\u00a0", " "),
+    tips = [panel.list.item(r).toolTip() for r in range(panel.list.count())]
+    G.check(rows and all(t.startswith("G1") for t in tips) and
+            sum("\u2192 G2" in r for r in rows) == 1 and
+            "\u2192 G2" in rows[b.Solution - 1] and "drawn: the G2 blend bent from it" in
+            tips[b.Solution - 1].replace("\u00a0", " "),
             f"blend G2: the Solutions rows are the G1 solutions, the picked one says what is "
             f"drawn (QA gui F10) ({rows[b.Solution - 1] if rows else rows})")
+    # each row one line in the 260 px Combo View (wrapped, the drawn row ran to three lines:
+    # review revT), cut with an ellipsis where it ends, the drawn G2 length before the cut
+    fm, view = panel.list.fontMetrics(), panel.list.viewport().width()
+    heights = [panel.list.visualItemRect(panel.list.item(r)).height() for r in range(len(rows))]
+    kept = rows[b.Solution - 1].split(",")[0] if rows else ""
+    G.check(not panel.list.wordWrap() and not panel.list.horizontalScrollBar().isVisible()
+            and heights and max(heights) < 2 * fm.height()
+            and "\u2192 G2" in kept and fm.horizontalAdvance(kept) <= view,
+            f"blend G2: each Solutions row one line, the drawn G2 length shown ({heights}, "
+            f"{kept!r}: {fm.horizontalAdvance(kept)} px in {view} px)")
     G.screenshot("gui_blend_panel.png")
     # another Elastica command while this panel is open: inactive, and refused when called
     # (FreeCAD's own commands leave an open dialog alone; it was replaced without its OK

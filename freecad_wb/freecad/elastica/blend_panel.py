@@ -54,7 +54,11 @@ class BlendPanel(Panel):
                                       ["G1 (tangent)", "G2 (curvature)"], B.G2_TIP)
         s = self.box("Solutions")
         self.list = QtGui.QListWidget()
-        self.list.setWordWrap(True)
+        # one line a row, cut with an ellipsis where the 260 px Combo View ends (its
+        # tooltip in full): wrapped, one row ran to three lines (review revT)
+        self.list.setWordWrap(False)
+        self.list.setHorizontalScrollBarPolicy(QtCore.Qt.ScrollBarAlwaysOff)
+        self.list.setTextElideMode(QtCore.Qt.ElideRight)
         self.list.setMinimumHeight(90)
         self.list.setMaximumHeight(140)       # about three solutions; the panel stays short
         self.list.setToolTip(self.LIST_TIP)
@@ -437,15 +441,17 @@ def error_line(status):
 def row_lines(obj):
     """The Solutions rows in one line each (blend.descriptions / g2_rows in full are their
     tooltips): length, energy, inflections, loops where any; at G2 each row its G1 solution
-    and the picked one the G2 blend drawn from it (its length)."""
+    and the picked one the G2 blend drawn from it (its length) right after the G1 length: a
+    row is one line, cut with an ellipsis where the Combo View ends."""
     n = len(obj.Descriptions)
     data = [obj.Lengths, obj.Energies, obj.Inflections, obj.Loops]
     if any(len(d) != n for d in data):
         return list(obj.Descriptions)
-    rows = [f"{j + 1}: {length_text(L, 4)}, energy {per_length(E)}, "
+    g2 = obj.Continuity == "G2" and bool(obj.Curves)
+    # at G2 the drawn blend's length right after its G1 solution's, in the ~30 characters an
+    # elided row keeps at 260 px ('G1' and 'drawn' are the tooltip's: g2_rows)
+    drawn = f" \u2192 G2 {length_text(float(obj.BlendLength), 4)}" if g2 else ""
+    return [f"{j + 1}: {length_text(L, 4)}"
+            + (drawn if j == obj.Solution - 1 else "") + f", energy {per_length(E)}, "
             f"{B.plural(i, 'inflection')}" + (f", {B.plural(lp, 'loop')}" if lp else "")
             for j, (L, E, i, lp) in enumerate(zip(*data))]
-    if obj.Continuity != "G2" or not rows or not obj.Curves:
-        return rows
-    drawn = f" \u2192 drawn: G2 {length_text(float(obj.BlendLength), 4)}"
-    return [f"G1 {r}" + (drawn if j == obj.Solution - 1 else "") for j, r in enumerate(rows)]
