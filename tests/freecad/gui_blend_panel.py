@@ -104,7 +104,7 @@ def note_follows_the_length(panel):
     b = panel.obj
     retype(panel.length, "200 mm")
     G.wait()
-    said = panel.warning[1].text() if panel.warning[0].isVisible() else ""
+    said = panel.warning[1].toolTip() if panel.warning[0].isVisible() else ""
     G.screenshot("gui_blend_note_typed.png")
     G.check(b.Length.Value == 200.0 and not b.Status.startswith("error") and
             "151.00 mm" not in said and "No free batten" not in said,
@@ -112,8 +112,8 @@ def note_follows_the_length(panel):
     retype(panel.length, "151 mm")
     G.wait()
     G.check(b.Length.Value == 151.0 and panel.warning[0].isVisible() and
-            "solved for a length instead, 151.00 mm" in panel.warning[1].text(),
-            f"the command's length typed back: its note again ({panel.warning[1].text()!r})")
+            "solved for a length instead, 151.00 mm" in panel.warning[1].toolTip(),
+            f"the command's length typed back: its note again ({panel.warning[1].toolTip()!r})")
 
 
 def note_kept(doc, b):
@@ -126,7 +126,7 @@ def note_kept(doc, b):
         Gui.ActiveDocument.setEdit(b.Name)
         G.wait()
         panel = T.CURRENT[0]
-        return panel, (panel.warning[1].text() if panel.warning[0].isVisible() else "")
+        return panel, (panel.warning[1].toolTip() if panel.warning[0].isVisible() else "")
 
     panel, said = reopened_note()
     G.check("No free batten (tension 0) joins these ends: solved for a length instead, 151.00 mm"
@@ -143,7 +143,7 @@ def note_kept(doc, b):
     Gui.ActiveDocument.setEdit(b2.Name)
     G.wait()
     panel = T.CURRENT[0]
-    said = panel.warning[1].text() if panel.warning[0].isVisible() else ""
+    said = panel.warning[1].toolTip() if panel.warning[0].isVisible() else ""
     G.check("solved for a length instead, 151.00 mm" in said, f"and after reopening: {said!r}")
     panel.mode.setCurrentIndex(1)                     # a tension: the designer's choice now
     G.wait()
@@ -154,7 +154,7 @@ def note_kept(doc, b):
     Gui.ActiveDocument.setEdit(b2.Name)
     G.wait()
     panel = T.CURRENT[0]
-    G.check(not panel.warning[0].isVisible(), f"nor later: {panel.warning[1].text()!r}")
+    G.check(not panel.warning[0].isVisible(), f"nor later: {panel.warning[1].toolTip()!r}")
     panel.reject()
     G.pump()
     App.closeDocument(doc2.Name)
@@ -175,7 +175,7 @@ def ends_toggled(doc, sk, right, left):
     G.wait()
     panel.end2.click()
     G.wait()
-    said = panel.warning[1].text()
+    said = panel.warning[1].toolTip()
     G.check(ends_of(b) == TOPS and b.Mode == "length" and b.Length.Value == 151.0
             and not b.Status.startswith("error") and panel.mode.currentIndex() == 0
             and panel.length.isEnabled() and panel.length.text() == "151.00 mm",
@@ -183,6 +183,14 @@ def ends_toggled(doc, sk, right, left):
             f"({b.Status})")
     G.check(panel.warning[0].isVisible() and "No free batten" in said and "151.00 mm" in said,
             f"ends no free batten joins: the panel says why by length ({said})")
+    # the amber line short in the 260 px Combo View (seven lines before, /tmp/revT/
+    # gui_blend_no_free_batten_crop.png: review revT; two now, the icon beside it), the note
+    # in full its tooltip and the Details' head
+    line, fm = panel.warning[1], panel.warning[1].fontMetrics()
+    G.check(line.heightForWidth(line.width()) < 3 * fm.height() and
+            line.text().startswith("No free batten") and panel.details.text().startswith(said),
+            f"ends no free batten joins: the warning two lines at most ({line.text()!r}, "
+            f"{line.heightForWidth(line.width())} px high)")
     note_said_again(panel)
     G.screenshot("gui_blend_ends_by_length.png")
     panel.end1.click()
@@ -220,7 +228,7 @@ def ends_toggled(doc, sk, right, left):
     panel.mode.setCurrentIndex(0)
     G.wait()
     G.check(b.Mode == "length" and b.Length.Value == 151.0 and panel.length.text() == "151.00 mm"
-            and not b.Status.startswith("error") and "No free batten" in panel.warning[1].text(),
+            and not b.Status.startswith("error") and "No free batten" in panel.warning[1].toolTip(),
             f"'a length' without one: the command's length, said ({b.Length}, {b.Status})")
     panel.accept()
     G.pump()
@@ -486,7 +494,7 @@ def note_said_again(panel):
     App.Units.setSchema(3)
     try:
         panel.refresh()
-        said = panel.warning[1].text()
+        said = panel.warning[1].toolTip()
         G.check("instead, 5.94 in (1.5 \u00d7 the 3.96 in between" in said and "mm" not in said
                 and panel.obj.Status == before, f"the note said again in inches: {said!r}")
     finally:
@@ -656,7 +664,7 @@ def bound_length_toggled(doc, sk, right, left):
     G.wait()
     panel.end2.click()
     G.wait()
-    said = panel.warning[1].text()
+    said = panel.warning[1].toolTip()
     G.check(ends_of(b) == TOPS and b.Mode == "length" and b.Length.Value == 160.0 and
             panel.mode.currentIndex() == 0 and not b.Status.startswith("error") and
             dict(b.ExpressionEngine).get("Length") == "LenSheet.len",

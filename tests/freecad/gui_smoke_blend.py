@@ -183,7 +183,7 @@ def blend_panel(doc, S):
     panel = G.open_panel(doc, "Elastica_Blend", [(sk3, "Edge1"), (sk3, "Edge2")],
                          "Blend without a free batten")
     nb = panel.obj
-    said = panel.warning[1].text()
+    said = panel.warning[1].toolTip()
     G.check(nb.Mode == "length" and panel.mode.currentIndex() == 0 and panel.length.isEnabled()
             and not nb.Status.startswith("error") and panel.list.count() >= 1,
             f"blend without a free batten: by length {nb.Length}, {panel.list.count()} solutions "

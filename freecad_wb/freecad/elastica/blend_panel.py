@@ -343,6 +343,13 @@ class BlendPanel(Panel):
         super().refresh()
         full = self.full_text()
         self.result.setToolTip("" if o.Status.startswith("error") else full)
+        notes = [] if self.warning is None or o.Status.startswith("error") else self.warnings()
+        if self.warning is not None:
+            # the amber line in one line too (it ran to seven in the 260 px Combo View: review
+            # revT): what is wrong; the note in full is its tooltip and heads the Details
+            self.warning[1].setText("<br>".join(unbroken(warning_line(w)) for w in notes))
+            self.warning[1].setToolTip("<br>".join(notes))
+            full = "<br>".join(notes + [full])
         self.details.setText(full)
         said = self.error[1].text() if o.Status.startswith("error") else self.result.text()
         self.more.setVisible(bool(o.Status) and full != said)
@@ -408,6 +415,13 @@ def status_line(obj):
     else:
         what = f"from {picked}"
     return f"G2 blend, {length}: {what}"
+
+
+def warning_line(note):
+    """One line for a note on the warning line: what is wrong, the note's first part without
+    its asides, up to its first ': ' where longer than a Combo View line (~40 characters)."""
+    what = _no_asides(outer_parts(note)[0])
+    return what if len(what) <= 40 else what.split(": ", 1)[0]
 
 
 def error_line(status):
