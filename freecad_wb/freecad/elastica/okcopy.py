@@ -33,7 +33,42 @@ def copy_code(doc, feature, target, sources_body):
                  f"{feature.Name!r}), {where})\n")
     else:
         code += f"_sk = {d}.getObject({target!r})\n"
-    return code + f"elastica_geometry.write_to_sketch({d}.getObject({feature.Name!r}), _sk)\n"
+    f = f"{d}.getObject({feature.Name!r})"
+    if not any(g is not None for g, _ in joint_ends(feature, None)):
+        return code + f"elastica_geometry.write_to_sketch({f}, _sk)\n"
+    return code + ("from freecad.elastica import okcopy as elastica_okcopy\n"
+                   f"elastica_geometry.write_to_sketch({f}, _sk, "
+                   f"constrain_to=elastica_okcopy.joint_ends({f}, _sk))\n")
+
+
+# the links by which a Fit (its joins) and an Elastic spline (its end conditions) meet an
+# edge's end, each with the property of its geometry index (the proxy's followed_links)
+_JOIN_LINKS = (("StartTangent", "EndTangent"), ("StartEdge", "EndEdge"))
+
+
+def joint_ends(feature, sketch):
+    """[(geo index, None) at the copy's start, (geo index, None) at its end]: the edges of
+    ``sketch`` (None: of any sketch) the feature's start and end are joined to (a Fit's
+    StartTangent / EndTangent, an Elastic spline's StartEdge / EndEdge), None where there is
+    none. A copy into that sketch is joined to them as the blend's is (geometry.join_ends:
+    an endpoint Tangent where the copy's end is on the edge's, as Sketcher_CreateFillet
+    joins its arc); it had no constraint at all (qagui3 F1: the profile held by equal
+    floating-point ends only, the first edit of a line left the copy behind). join_ends
+    adds a joint only where the copy's end is on that edge's end bit for bit (a free or a
+    tangent-only end beside it is not joined)."""
+    links = getattr(getattr(feature, "Proxy", None), "followed_links", {})
+    for pair in _JOIN_LINKS:
+        if all(p in links for p in pair):
+            break
+    else:
+        return [(None, None), (None, None)]
+    out = []
+    for prop in pair:
+        link, g = getattr(feature, prop, None), getattr(feature, links[prop], -1)
+        ok = bool(link) and (sketch is None or link[0] == sketch) and isinstance(g, int) \
+            and 0 <= g < len(getattr(link[0], "Geometry", ()))
+        out.append((g if ok else None, None))
+    return out
 
 
 class Unsolved(Exception):
