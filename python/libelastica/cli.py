@@ -636,7 +636,9 @@ def build_parser() -> argparse.ArgumentParser:
                    help="write the result as JSON (end_tangent_error_rad: the source's ends' "
                         "tangent error, what the report's 'end tangents' line prints; "
                         "piece_end_tangent_error_rad: every piece end's, the inflections' "
-                        "included; deviation: the largest distance from the source)"
+                        "included; unheld_joints: the joints where the pieces meet not G1, "
+                        "{joint, angle_rad, why}, joint j where bsplines[j] starts; "
+                        "deviation: the largest distance from the source)"
                         + _TO_STDOUT)
     q.add_argument("--svg", metavar="PATH", help="picture (SVG)" + _TO_STDOUT)
     q.add_argument("--png", metavar="PATH", help="picture (PNG, matplotlib)" + _PNG_TO_STDOUT)

@@ -87,6 +87,10 @@ def cmd_g2quad(args) -> int:
            "inflection_tangent_error_rad": g.inflection_tangent_error,
            "end_curvature_error": g.end_curvature_error,
            "join_angle_rad": g.join_angle, "join_curvature_jump": g.join_curvature_jump,
+           # the joints not G1, each with why (G2Quadratic.unheld_joints; joint j: where
+           # bsplines[j] starts), where join_angle_rad gives only the largest angle
+           "unheld_joints": [{"joint": j, "angle_rad": a, "why": why}
+                             for j, a, why in g.unheld_joints],
            "dropped": g.dropped,
            "seam_angle_rad": g.seam_angle, "seam_curvature_jump": g.seam_curvature_jump,
            "polyline": g.polyline.points, "A": g.polyline.A,

@@ -114,3 +114,41 @@ def test_a_stray_warning_is_said_in_the_commands_words(capsys, tmp_path):
     assert "fit=True" not in err and "el.fit" not in err and "g2_quadratic" not in err, err
     code, out, err = cli(capsys, "g2quad", csv, "--edges", 24, "--fit")
     assert code == 0 and err == "", err
+
+
+# a k 0.9 S whose inflection leaves a piece of 3 edges at 12 (9 + 3): that joint not held
+S3 = el.SmoothElastica(x0=0, y0=0, phi=1.4506, mu=(1 / 120.0) ** 2, k=0.9, q=-0.4902,
+                       length=439.4)
+
+
+def test_the_joints_not_g1_are_in_the_json(capsys, tmp_path):
+    """G2Quadratic.unheld_joints where the user reads the JSON: each joint not G1 (which, its
+    angle, why), where join_angle_rad gives only the largest; [] where every joint holds."""
+    (tmp_path / "c.json").write_text(json.dumps(el.io.curve_to_dict(S3)))
+    code, out, err = cli(capsys, "g2quad", tmp_path / "c.json", "--edges", "12",
+                         "--json", tmp_path / "g.json")
+    assert code == 0, err
+    doc = json.loads((tmp_path / "g.json").read_text())
+    g = el.g2_quadratic(S3, 12)
+    assert len(g.unheld_joints) == 1
+    assert doc["unheld_joints"] == [{"joint": j, "angle_rad": a, "why": why}
+                                    for j, a, why in g.unheld_joints]
+    ((j, angle, why),) = g.unheld_joints
+    assert doc["join_angle_rad"] == angle and why.startswith("a piece of 3 edges")
+    qa_s = el.SmoothElastica(x0=1500, y0=-800, phi=0.3, mu=(1 / 120.0) ** 2, k=0.6, q=0.2,
+                             length=380.0)       # held at 24 edges: G1, nothing named
+    (tmp_path / "h.json").write_text(json.dumps(el.io.curve_to_dict(qa_s)))
+    code, out, err = cli(capsys, "g2quad", tmp_path / "h.json", "--edges", "24",
+                         "--json", tmp_path / "g.json")
+    assert code == 0, err
+    assert json.loads((tmp_path / "g.json").read_text())["unheld_joints"] == []
+    assert "not G1" not in out
+
+
+def test_the_joints_not_g1_are_in_the_text(capsys, tmp_path):
+    """The report's summary line names each joint not G1, its angle and why (g2_summary)."""
+    (tmp_path / "c.json").write_text(json.dumps(el.io.curve_to_dict(S3)))
+    code, out, err = cli(capsys, "g2quad", tmp_path / "c.json", "--edges", "12")
+    assert code == 0, err
+    ((j, angle, why),) = el.g2_quadratic(S3, 12).unheld_joints
+    assert f"not G1 where piece {j} starts, {np.degrees(angle):.3g} deg: {why}" in out, out
