@@ -498,9 +498,9 @@ def _joint_end(x: np.ndarray, start, end, tangent, which: int) -> Optional[np.nd
 
 def _held_joints(points: np.ndarray, piece_start, ends: np.ndarray, ends_dir) -> dict:
     """Where two pieces of a G2 quadratic meet (joint j: piece j-1's end, piece j's start, at
-    an inflection of the source): {j: (piece j-1's polyline, piece j's)} with both ends holding
-    the source's tangent there (_joint_end: the pieces then meet G1, QA gui F3), for the
-    joints where both pieces have JOINT_HOLD_EDGES edges or more and both find a place; held
+    an inflection of the source): {j: (piece j-1's polyline, piece j's, the unit tangent they
+    hold)} with both ends holding the source's tangent there (_joint_end: the pieces then
+    meet G1, QA gui F3), for the joints where both pieces have JOINT_HOLD_EDGES edges or more and both find a place; held
     only so, since one side held alone can turn the two farther apart (0.39 deg against 0.26
     at 12 edges of an S). ``ends_dir`` None (point data without tangents): the two uniform
     ends' mean tangent there, the one both then hold (G1 needs only one tangent)."""
@@ -523,7 +523,7 @@ def _held_joints(points: np.ndarray, piece_start, ends: np.ndarray, ends_dir) ->
         right = None if left is None else _joint_end(points[m:b + 1], ends[j], ends[j + 1],
                                                      T, 0)
         if right is not None:
-            held[j] = (left, right)
+            held[j] = (left, right, T)
     return held
 
 
@@ -537,14 +537,24 @@ def _hold_joints(built: list, joints: dict, ends: np.ndarray, factor: float,
     then stays as it was). Its own, not the largest of all pieces: beside a bad piece a good
     one grew 6 x (review revC: a noisy stroke at 24 edges, 33.8 -> 209 mm from its samples
     beside one of 280, which held fell to 82.6). In place; joints from left to right, so a
-    piece between two carries both moves, each against the piece as built. Returns the joints
-    held."""
+    piece between two carries both moves, each against the piece as built, except a piece of
+    4 edges: its end is found again on its polyline as moved for its start (x_1 and x_3 each
+    slid keeping A_2 against the other as it was change A_2 by t s det(u_2, u_1): neither
+    joint G1, 5.6e-5 and 6.6e-5 rad on a k 0.3 S of 4 + 4 + 4 edges; x_3 slid keeping the
+    moved A_2 leaves the start's parabola (m_2, v_1, A_2) as it is); none found: the joint is
+    dropped from ``joints`` (not held, no end found). Returns the joints held."""
     limit, kept = [factor * b[2] for b in built], set()
     for j in sorted(joints):
+        ends_of = list(joints[j][:2])
+        if len(built[j - 1][0]) == 5 and j - 1 in kept:
+            ends_of[0] = _joint_end(built[j - 1][0], ends[j - 1], ends[j], joints[j][2], 1)
+            if ends_of[0] is None:
+                del joints[j]
+                continue
         new = []
         for p, lo, hi in ((j - 1, -3, -1), (j, 1, 3)):
             x = built[p][0].copy()
-            x[lo:hi] = joints[j][p - j + 1][lo:hi]
+            x[lo:hi] = ends_of[p - j + 1][lo:hi]
             try:
                 bs = g2_bspline(x, ends[p], ends[p + 1])
             except DomainError:

@@ -258,3 +258,26 @@ def test_a_piece_of_3_edges_names_its_joint_unheld(monkeypatch):
         assert j == 1 and angle == g.join_angle > 1e-4 and why.startswith("a piece of 3 edges")
         assert f"not G1 where piece 1 starts, {math.degrees(angle):.3g} deg: a piece of 3" \
             in g.g2_summary()
+
+
+@pytest.mark.parametrize("qf", [-0.6, -0.9])
+def test_a_piece_of_4_edges_between_two_joints_holds_both(qf, monkeypatch):
+    """A k 0.3 S through two inflections at 12 edges, 4 + 4 + 4: the middle piece carries
+    both joints' moves. x_1 and x_3 each slid keeping A_2 against the other as it was changed
+    A_2 by t s det(u_2, u_1), so both joints were kept 'held' and met 5.6e-5 and 6.6e-5 rad
+    apart ('held, yet apart'); its end found again on its moved polyline, both G1. The
+    deviation limit lifted (the second joint strays 4 % farther here: refused by default;
+    the hold's geometry is what is tested), G2 inside every piece."""
+    from libelastica import g2quad as Q
+    hold = Q._hold_joints
+    monkeypatch.setattr(Q, "_hold_joints", lambda built, joints, ends, factor, dev:
+                        hold(built, joints, ends, math.inf, dev))
+    K = 1.6080486199305128          # K(k = 0.3), scipy.special.ellipk(0.09)
+    c = el.SmoothElastica(x0=0, y0=0, phi=0.3, mu=(1 / 120.0) ** 2, k=0.3, q=qf * K,
+                          length=2.75 * 2 * K * 120.0)
+    g = el.g2_quadratic(c, 12)
+    assert list(np.diff(g.polyline.piece_start)) == [4, 4, 4]
+    assert g.unheld_joints == () and g.join_angle < 1e-12 and g.curvature_jump < 1e-8
+    for a, b in zip(g.bsplines, g.bsplines[1:]):
+        ta, tb = _end_tangent(a, -1), _end_tangent(b, 0)
+        assert abs(ta[0] * tb[1] - ta[1] * tb[0]) < 1e-12 and ta @ tb > 0
