@@ -159,7 +159,9 @@ def _build_library(outdir: Path) -> Path:
     with concurrent.futures.ThreadPoolExecutor(max_workers=os.cpu_count() or 2) as pool:
         objs = list(pool.map(compile_one, sources))
     so = outdir / "libelastica.so"
-    subprocess.run(cc + ["-shared", f"-Wl,-soname,{SONAME}", "-o", str(so)]
+    # the API alone, as the Makefile's library (libelastica/exports.map: el__* stay local)
+    exports = [f"-Wl,--version-script={src / 'exports.map'}"] if (src / "exports.map").is_file() else []
+    subprocess.run(cc + ["-shared", f"-Wl,-soname,{SONAME}"] + exports + ["-o", str(so)]
                    + [str(o) for o in objs] + _pkg_config("--libs") + ["-lm", "-pthread"],
                    check=True)
     return so
@@ -274,7 +276,7 @@ def build_sdist(sdist_directory, config_settings=None):
             ti.size = len(data)
             tar.addfile(ti, io.BytesIO(data))
         if src is not None and not str(src).startswith(str(HERE)):
-            for f in sorted(src.glob("*.[ch]")):
+            for f in sorted(src.glob("*.[ch]")) + [src / "exports.map"]:
                 add(f, f"csrc/libelastica/{f.name}")
             add(inc / "elastica.h", "csrc/include/elastica.h")
         pkg_info = _metadata().encode()

@@ -25,6 +25,10 @@ assert el._ffi.CDEF_MODULE == str(pkg / "_elastica_abi.py")     # the header pre
 assert (pkg / "binding.h").is_file()                           # el.fit's one call (_fit_call.py)
 assert sys.modules["libelastica._fit_call"]._ONE_CALL is not None
 assert "pycparser" not in sys.modules                          # (not parsed at import)
+import ctypes
+lib = ctypes.CDLL(str(pkg / "libelastica.so"))
+assert hasattr(lib, "el_fit_smooth") and hasattr(lib, "el_binding_fit")
+assert not hasattr(lib, "el__gsl_quiet")                       # internals stay local (exports.map)
 c = el.SmoothElastica(x0=0, y0=0, phi=0, mu=1.0, k=0.8, q=0.0, length=3.0)
 s = np.linspace(0, 3, 40)
 pts = c.points(s)
