@@ -317,6 +317,9 @@ def _set_constraints(o, model: str, n: int, constraints: Optional[Mapping[str, o
             getattr(o, f"{where}_point")[0] = x
             getattr(o, f"{where}_point")[1] = y
         elif kind in ("angle", "number"):
+            if kind == "angle" and np.ndim(value) == 1 and np.size(value) == 2:   # hermite's (tx, ty)
+                raise ValueError(f"fit: constraint {name!r} is an angle in radians (the direction of "
+                                 f"travel), got the pair {value!r}: for (tx, ty) give math.atan2(ty, tx)")
             v = as_real(value, f"fit: constraint {name!r}")
             if kind == "angle":   # (stack: _options, _fit, fit, its caller)
                 warn_if_degrees(v, f"fit: constraint {name!r}", stacklevel=5)

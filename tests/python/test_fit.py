@@ -789,6 +789,12 @@ def test_constraint_errors_name_the_constraint():
                 {"end_point": (1,)}, {"k": "x"}):
         with pytest.raises(ValueError):
             el.fit(pts, model="smooth", constraints=bad)
+    # a tangent vector, as hermite and elastic_spline take it: the message names the angle
+    # and its unit ("must be a real number, got (1, 0.05)" before, QA qapy3 G2)
+    for name in ("start_tangent", "end_tangent"):
+        for vec in ((1, 0.05), [1.0, 0.05], np.array([1.0, 0.05])):
+            with pytest.raises(ValueError, match=rf"'{name}' is an angle in radians .*atan2"):
+                el.fit(pts, model="smooth", constraints={name: vec})
 
 
 @pytest.mark.parametrize("model", ["smooth", "discrete"])
