@@ -32,6 +32,7 @@ _LAZY = {name: module for module, names in {
               "MQBlend", "blend_curve", "eck_d", "eck_omega"),
     "spline": ("DoublesBackError", "ElasticSpline", "LoopWarning", "SeamWarning", "UnstableWarning",
                "elastic_spline", "holding_tension"),
+    "spline_hook": ("HOOK_RATIO", "HookWarning"),
     "bspline": ("BSpline", "cubic_through", "interpolate_c2", "keyline_bspline",
                 "smooth_chain_to_bspline", "smooth_to_bspline"),
     "affine": ("AffinePolyline", "OsculatingConics", "affine_coords", "affine_curvature",

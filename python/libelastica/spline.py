@@ -671,6 +671,10 @@ def elastic_spline(points, tension: Optional[float] = None, length: Optional[flo
                                           if where else "") +
                     f"): no fair batten was found at {fix}",
                     LoopWarning, stacklevel=2)
+            from .spline_hook import HookWarning, hook_text   # (it imports LoopWarning from here)
+            hooked = not sp.loops and _shown(HookWarning) and hook_text(sp)
+            if hooked:
+                say("elastic_spline: " + hooked, HookWarning, stacklevel=2)
             if sp.unstable:
                 fix = ((("try " if sp.holding()[0] is not None else "") + sp.holding_text())
                        if advise else "try a larger tension (el.holding_tension), or ease the "

@@ -78,6 +78,25 @@ class SplineOutlineTest(S.DocTest):
         self.assertEqual(hints(self.spline([(0, 0), (50, 0), (100, 3), (55, 12), (5, 16)],
                                            Tension=1e-4)), [])
 
+    def test_a_hooked_outline_says_so(self):
+        """QA gui3 G4: 30 points round an egg, 0.4 mm jitter, point 7 moved 5 mm, Closed: the
+        batten hooks (radius 0.52 mm between points 2 and 3, 0.66 mm apart) without crossing
+        itself; one warning says where, on the Status too. Without the jitter: none."""
+        rng = np.random.default_rng(11)
+        t = np.sort(rng.uniform(0, 2 * math.pi, 30))
+        egg = np.c_[150 * np.cos(t) + 0.15 * 150 * np.cos(2 * t), 90 * np.sin(t)]
+        jitter = rng.normal(0, 0.4, (30, 2))
+        for j, want in ((1.0, 1), (0.0, 0)):
+            xy = egg + j * jitter
+            xy[7] += [5, 5]
+            s = self.spline(list(map(tuple, xy + [600, 300])), Closed=True)
+            said = [w for w in s.Warnings if "hooks" in w]
+            self.assertEqual(len(said), want, s.Warnings)
+            if want:
+                self.assertIn("the batten hooks between points 2 and 3 (counted from 0): it bends "
+                              "to radius 0.52 mm there", said[0])
+                self.assertIn("warning: the batten hooks", s.Status)
+
 
 if __name__ == "__main__":
     unittest.main()

@@ -384,6 +384,10 @@ def batten_cautions(sp, mode):
                                                "from 0" if where else "") +
                    "): no fair batten at this " + (f"tension; {fix}" if mode == "tension" else
                                                    "length; give a shorter length or a tension"))
+    if not sp.loops:                      # a micro-loop without a crossing: HookWarning's words
+        hooked = binding_module("spline_hook").hook_text(sp, length_mark, noun="batten")
+        if hooked:
+            out.append(hooked)
     if sp.unstable:                       # no minimum: the library's UnstableWarning's words
         out.append(sp.unstable_text(fix if mode == "tension" else
                                     "try another length, or a tension", said="", noun="batten"))
