@@ -84,7 +84,7 @@ def g2_blend(r, i, mode, value, tol, degree):
             # where Length mode has G2 blends of 153 to 404 mm)
             found = g2_lengths_hint(pts, ends, dist, "Solve for a length and give one "
                                     "of those, or G1")
-            hint = None if found.startswith("none") else found
+            hint = None if found.startswith("no G2 blend found") else found
         hint = hint or g2_failure_hint(pts, ends, kw, dist)
         # not the exception's words about the spline it keeps: nothing is returned here
         solve = "the batten's solve did not converge" if isinstance(exc, e.NotConvergedError) \
@@ -181,15 +181,18 @@ def g2_by_length(pts, ends, lengths):
 def g2_lengths_hint(pts, ends, dist, action="try one of those, or G1"):
     """What a G2 blend by length that failed (and no free G2 batten) says to try: the
     lengths of G2_REACH_MULTIPLES times ``dist`` (3 digits: typed back, each solves) at
-    which one was found, then ``action`` (what to do with them). QA17 M1 (line into an arc
-    75 mm apart): none at 80 .. 130 mm, the family followed folds at 135.5 mm (an
-    independent shooting solve); 150 .. 300 found."""
+    which one was found, then ``action`` (what to do with them); where none was, that no G2
+    blend was found (tension 0, which every caller has tried, and those lengths): use G1.
+    QA17 M1 (line into an arc 75 mm apart): none at 80 .. 130 mm, the family followed
+    folds at 135.5 mm (an independent shooting solve); 150 .. 300 found."""
     lengths = [float(f"{m * dist:.3g}") for m in G2_REACH_MULTIPLES]
     found = [length for length, _ in g2_by_length(pts, ends, lengths)]
     span = (f"{G2_REACH_MULTIPLES[0]:g} to {G2_REACH_MULTIPLES[-1]:g} \u00d7 the "
             f"{length_mark(dist, 4)} between the ends")
     if not found:
-        return f"none was found at {span} either: pick a tension, or G1"
+        # every caller has tried tension 0 (the free G2 batten) first; "pick a tension"
+        # named a box disabled in length mode (QA gui3 G3), and no tension was known to work
+        return f"no G2 blend found between these edges (tried: tension 0, and lengths {span}): use G1"
     said = ", ".join(length_mark(length, 3) for length in found)
     return f"G2 blends were found at the lengths {said} (tried: {span}): {action}"
 
