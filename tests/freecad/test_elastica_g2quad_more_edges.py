@@ -52,7 +52,9 @@ class G2QuadMoreEdgesTest(S.DocTest):
         self.assertGreater(more, 24)
         q.Edges = more                            # what it named builds it
         self.doc.recompute()
-        self.assertTrue(q.Status.startswith("ok: closed"), q.Status)
+        # built, but its pieces (one per wiggle of the jitter) meet kinked: the verdict
+        # first, not "ok" (QA gui3 G2)
+        self.assertTrue(q.Status.startswith("built, not G2: "), q.Status)
         self.assertNotIn("Invalid", q.State)
         self.assertTrue(Part.Wire(q.Shape.Edges).isClosed())
         for e in q.Shape.Edges:
