@@ -433,6 +433,8 @@ def error_line(status):
     if len(parts) == 1 and "(" not in text:
         return text[:1].upper() + text[1:]
     what = _no_asides(parts[0])
+    if "no G2 blend found between these edges" in text:   # blend_g2.g2_lengths_hint: none anywhere
+        return "No G2 blend found between these edges (tension 0 and lengths tried): use G1"
     m = re.search(r"G2 blends were found at the lengths (.*?) \(tried", text)
     n = re.search(r"found at tensions up to about (.*?), but none", text)
     free = re.search(r"the free G2 batten \(tension 0\) is (.*?) long", text)
