@@ -167,29 +167,32 @@ def turning_samples(curve) -> int:
     return max(CURVE_SAMPLES, int(math.ceil(want)) + 1)
 
 
-def curve_feet(curve, data, samples=None):
-    """Each point's nearest point on a curve of arc length (a SmoothElastica, HermiteChain,
-    ElasticSpline: points / angle / curvature / length): (distances, feet's s). Coarse
-    samples (``samples``, (k, 2) at equal arc length over [0, length], else
-    :func:`turning_samples` of them: no step turning more than STEP_TURN), and every sample nearer the point than both its neighbours and within one
-    sample step of the nearest (|gamma(s) - p| moves at most |ds|: the nearest point lies
-    within half a step of a sample that near) refined in the bracket of its neighbours
-    (refine_feet); the nearest of those feet wins."""
+# curve_feet's sieve (where points x samples exceed FEET_TABLE): blocks of FEET_BLOCK,
+# FEET_BLOCK^2, ... consecutive samples, their boxes
+FEET_BLOCK = 8
+FEET_TABLE = 1 << 17
+
+
+def _feet_d2(qc, qq, sm, n2, p, j):
+    """curve_feet's squared distances of points p from samples j (index arrays that
+    broadcast), about the samples' centre (qc, sm: centred; qq, n2: their squared norms) and
+    elementwise, so a table and a list of pairs round alike (a BLAS product's FMA does not:
+    one row of it, a matrix-vector product, rounds otherwise than the same row of many)."""
     n = np()
-    data = n.asarray(data, dtype=float)
-    L = float(curve.length)
-    if samples is None:
-        samples = curve.points(n.linspace(0.0, L, turning_samples(curve)))
-    k = len(samples)
+    return n.maximum(n2[j] - 2.0 * (qc[p, 0] * sm[j, 0] + qc[p, 1] * sm[j, 1]) + qq[p], 0.0)
+
+
+def _table_dips(qc, qq, sm, n2, step):
+    """curve_feet's candidate (point, sample) pairs from the full (points x samples) table,
+    (rows, samples) at a time: every sample within one step of the nearest (squared: no square
+    root of the table) that is nearer than both its neighbours. Sorted by point and sample."""
+    n = np()
+    k = len(sm)
     rows = max(1, min(1024, (1 << 20) // k))    # bounded (rows, k) tables
-    step = L / (k - 1)
-    table = centred_table(samples)
     who, at_j = [], []
-    for a in range(0, len(data), rows):
-        part, qq = table(data[a:a + rows])
-        d2 = n.maximum(part + qq[:, None], 0.0)
-        # the samples within a step of the nearest (squared: no square root of the table),
-        # then of those the dips, compared with their neighbours (few: no padded copies)
+    cols = n.arange(k)
+    for a in range(0, len(qc), rows):
+        d2 = _feet_d2(qc, qq, sm, n2, n.arange(a, min(a + rows, len(qc)))[:, None], cols[None, :])
         near = n.sqrt(d2.min(axis=1)) + step
         r, j = n.nonzero(d2 <= (near * near)[:, None])
         here = d2[r, j]
@@ -197,7 +200,94 @@ def curve_feet(curve, data, samples=None):
             ((j == k - 1) | (here <= d2[r, n.minimum(j + 1, k - 1)]))
         who.append(r[dip] + a)
         at_j.append(j[dip])
-    p, j = n.concatenate(who), n.concatenate(at_j)
+    return n.concatenate(who), n.concatenate(at_j)
+
+
+def _sieved_dips(qc, qq, sm, n2, step):
+    """_table_dips' pairs, the same to the bit, without the table: blocks of FEET_BLOCK
+    consecutive samples and coarser blocks of FEET_BLOCK of those, their boxes; from the
+    coarsest level down, a point keeps the blocks whose box lies within one step of an
+    upper bound of its nearest distance (its nearest block middle sample so far), then the
+    samples of the finest blocks it keeps. The nearest sample's blocks are always kept (their
+    boxes lie nearer than it), so are all within one step of it; the bound's margin covers the
+    distances' rounding. Sorted by point and sample, as the table's."""
+    n = np()
+    k, B = len(sm), FEET_BLOCK
+    levels = [(n.minimum.reduceat(sm, n.arange(0, k, B), axis=0),
+               n.maximum.reduceat(sm, n.arange(0, k, B), axis=0))]
+    while len(levels[-1][0]) > B:
+        lo, hi = levels[-1]
+        s = n.arange(0, len(lo), B)
+        levels.append((n.minimum.reduceat(lo, s, axis=0), n.maximum.reduceat(hi, s, axis=0)))
+    slack = 1e-12 * (qq + float(n2.max()))      # the distances' rounding, generously
+    nfine = len(levels[0][0])
+    rows = max(16, min(4096, (1 << 20) // nfine))
+    who, at_j = [], []
+    inner = n.arange(-1, B + 1)
+    for a in range(0, len(qc), rows):
+        pts = n.arange(a, min(a + rows, len(qc)))
+        U = n.full(len(pts), n.inf)
+        pj, bj = None, None
+        size = B ** len(levels)                 # samples a block of the coarsest level
+        for lo, hi in levels[::-1]:
+            if pj is not None and not len(pj):
+                break
+            if pj is None:
+                pj, bj = n.repeat(pts, len(lo)), n.tile(n.arange(len(lo)), len(pts))
+            else:
+                pj = n.repeat(pj, B)
+                bj = (bj[:, None] * B + n.arange(B)[None, :]).ravel()
+                keep = bj < len(lo)
+                pj, bj = pj[keep], bj[keep]
+            first = n.flatnonzero(n.r_[True, pj[1:] != pj[:-1]])
+            dm = _feet_d2(qc, qq, sm, n2, pj, n.minimum(bj * size + size // 2, k - 1))
+            U[pj[first] - a] = n.minimum(U[pj[first] - a], n.minimum.reduceat(dm, first))
+            far = n.sqrt(U[pj - a]) + step
+            gap = n.maximum(n.maximum(lo[bj] - qc[pj], qc[pj] - hi[bj]), 0.0)
+            keep = n.sum(gap * gap, axis=1) <= far * far * (1.0 + 1e-12) + slack[pj]
+            pj, bj = pj[keep], bj[keep]
+            size //= B
+        if not len(pj):
+            continue
+        cols = bj[:, None] * B + inner[None, :]
+        d2 = _feet_d2(qc, qq, sm, n2, pj[:, None], n.clip(cols, 0, k - 1))
+        d2[(cols < 0) | (cols >= k)] = n.inf
+        mid = d2[:, 1:-1]
+        first = n.flatnonzero(n.r_[True, pj[1:] != pj[:-1]])
+        near = n.sqrt(n.minimum.reduceat(mid.min(axis=1), first)) + step
+        reach = n.repeat(near * near, n.diff(n.r_[first, len(pj)]))
+        r, i = n.nonzero((mid <= reach[:, None]) & (mid <= d2[:, :-2]) & (mid <= d2[:, 2:]))
+        who.append(pj[r])
+        at_j.append(bj[r] * B + i)
+    if not who:
+        return n.zeros(0, dtype=n.intp), n.zeros(0, dtype=n.intp)
+    return n.concatenate(who), n.concatenate(at_j)
+
+
+def curve_feet(curve, data, samples=None):
+    """Each point's nearest point on a curve of arc length (a SmoothElastica, HermiteChain,
+    ElasticSpline: points / angle / curvature / length): (distances, feet's s). Coarse
+    samples (``samples``, (k, 2) at equal arc length over [0, length], else
+    :func:`turning_samples` of them: no step turning more than STEP_TURN), and every sample
+    nearer the point than both its neighbours and within one sample step of the nearest
+    (|gamma(s) - p| moves at most |ds|: the nearest point lies within half a step of a
+    sample that near) refined in the bracket of its neighbours (refine_feet); the nearest
+    of those feet wins. The samples are found from the (points x samples) table where it
+    has at most FEET_TABLE entries, else through a sieve of blocks of samples (the same
+    samples, without the table: _sieved_dips)."""
+    n = np()
+    data = n.asarray(data, dtype=float)
+    L = float(curve.length)
+    if samples is None:
+        samples = curve.points(n.linspace(0.0, L, turning_samples(curve)))
+    samples = n.asarray(samples, dtype=float)
+    k = len(samples)
+    step = L / (k - 1)
+    o = samples.mean(axis=0)                     # about the centre: no cancellation at offsets
+    sm, qc = samples - o, data - o
+    n2, qq = n.einsum("ij,ij->i", sm, sm), n.einsum("ij,ij->i", qc, qc)
+    dips = _table_dips if len(data) * k <= FEET_TABLE else _sieved_dips
+    p, j = dips(qc, qq, sm, n2, step)
     s, _, d2 = refine_feet(curve_at(curve), data[p], j * step, n.maximum(j - 1, 0) * step,
                            n.minimum(j + 1, k - 1) * step)
     order = n.lexsort((d2, p))                   # each point's nearest foot first
