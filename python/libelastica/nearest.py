@@ -221,7 +221,7 @@ def _sieved_dips(qc, qq, sm, n2, step):
         levels.append((n.minimum.reduceat(lo, s, axis=0), n.maximum.reduceat(hi, s, axis=0)))
     slack = 1e-12 * (qq + float(n2.max()))      # the distances' rounding, generously
     nfine = len(levels[0][0])
-    rows = max(16, min(4096, (1 << 20) // nfine))
+    rows = max(16, min(4096, (1 << 18) // nfine))  # bounded: (rows x nfine) pairs at most
     who, at_j = [], []
     inner = n.arange(-1, B + 1)
     for a in range(0, len(qc), rows):

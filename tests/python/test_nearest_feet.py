@@ -162,10 +162,12 @@ def _centred(c, q, samples):
             c.length / (len(samples) - 1)), samples
 
 
-@pytest.mark.parametrize("k, mu, length", [(0.3, 1.0, 4.0), (0.999, 400.0, 40.0), (1.001, 1.0, 4.0),
-                                           (1.82, 1.0, 40.0), (3.0, 25.0, 40.0)])
+@pytest.mark.parametrize("k, mu, length", [(0.3, 1.0, 4.0), (0.999, 400.0, 40.0),
+                                           (1.001, 1.0, 4.0), (1.82, 1.0, 40.0),
+                                           (3.0, 25.0, 40.0)])
 @pytest.mark.parametrize("offset, scale", [(0.0, 1.0), (1e6, 1.0), (5.0, 1e-6), (-3e8, 1e6)])
-def test_curve_feet_sieve_finds_the_tables_samples_to_the_bit(k, mu, length, offset, scale):
+def test_curve_feet_sieve_finds_the_tables_samples_to_the_bit(k, mu, length, offset, scale,
+                                                              monkeypatch):
     # the sieve of sample blocks (_sieved_dips, many points x many samples) against the full
     # table (_table_dips): the same candidate dips in the same order, so the same refine_feet
     # call and the same distances and feet; loops and curls (k across 1, an 11-turn loop),
@@ -178,18 +180,16 @@ def test_curve_feet_sieve_finds_the_tables_samples_to_the_bit(k, mu, length, off
     for coarse in (9, 257, None, 20001):
         samples = None if coarse is None else c.points(np.linspace(0.0, c.length, coarse))
         for m in (1, 40):
-            q = np.vstack([c.points(rng.uniform(0, c.length, m)),
-                           c.points(rng.uniform(0, c.length, m)) + rng.normal(0, 1e-3 * size, (m, 2)),
-                           c.points(rng.uniform(0, c.length, m)) + rng.normal(0, 0.3 * size, (m, 2)),
+            on = [c.points(rng.uniform(0, c.length, m)) for _ in range(3)]
+            q = np.vstack([on[0], on[1] + rng.normal(0, 1e-3 * size, (m, 2)),
+                           on[2] + rng.normal(0, 0.3 * size, (m, 2)),
                            c.points(np.zeros(m)) + rng.normal(0, 1e3 * size, (m, 2))])
             args, S = _centred(c, q, samples)
             a, b = nearest._table_dips(*args), nearest._sieved_dips(*args)
             assert np.array_equal(a[0], b[0]) and np.array_equal(a[1], b[1])
             feet = []
             for cut in (0, 1 << 62):        # every call sieved, then every call a table
-                nearest.FEET_TABLE, old = cut, nearest.FEET_TABLE
-                try:
-                    feet.append(curve_feet(c, q, S))
-                finally:
-                    nearest.FEET_TABLE = old
-            assert np.array_equal(feet[0][0], feet[1][0]) and np.array_equal(feet[0][1], feet[1][1])
+                monkeypatch.setattr(nearest, "FEET_TABLE", cut)
+                feet.append(curve_feet(c, q, S))
+            assert np.array_equal(feet[0][0], feet[1][0])
+            assert np.array_equal(feet[0][1], feet[1][1])
