@@ -46,18 +46,12 @@ static void distance_figures(const double *d, size_t n, double *figures)
         if (!isfinite(a[i])) { free(a); return; }
         if (a[i] > dmax) dmax = a[i];
     }
-    /* GSL's selection (the k-th smallest, a reordered), as np.partition's place k = n / 2
-     * and the largest below it */
+    /* GSL's median (gsl_stats_select's places (n - 1) / 2 and n / 2, a reordered): np.median's
+     * value; none where the two middle values' sum overflows (NaN left, as _median.py gives) */
     el__gsl_quiet();          /* (no GSL error is possible here, n >= 4: the rule all the same) */
-    const size_t k = n / 2;
-    const double upper = gsl_stats_select(a, 1, n, k);
-    double mid = upper;
-    if (n % 2 == 0) {
-        const double sum = 0.0 + gsl_stats_select(a, 1, n, k - 1) + upper;
-        mid = isfinite(sum) ? sum / 2.0 : NAN;
-    }
+    const double mid = gsl_stats_median(a, 1, n);
     free(a);
-    if (isnan(mid)) return;
+    if (!isfinite(mid)) return;
     figures[1] = mid;
     figures[2] = dmax;
 }
