@@ -362,3 +362,19 @@ def console_output(run):
                 os.close(fd)
         f.seek(0)
         return f.read().decode("utf-8", "replace"), result
+
+
+class Said:
+    """What the report view is told through ``App.Console.<kind>`` (PrintWarning,
+    PrintMessage, ...) while active, each text in ``said``."""
+
+    def __init__(self, kind="PrintWarning"):
+        self.kind, self.said = kind, []
+
+    def __enter__(self):
+        self.saved = getattr(App.Console, self.kind)
+        setattr(App.Console, self.kind, self.said.append)
+        return self
+
+    def __exit__(self, *exc):
+        setattr(App.Console, self.kind, self.saved)

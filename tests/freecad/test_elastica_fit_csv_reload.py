@@ -4,8 +4,6 @@ points with State 'Up-to-date' until the feature was touched; after reopening to
 so in the report view, and does not refit a file that did not change."""
 import os
 
-import FreeCAD as App
-
 import elastica_samples as S
 from freecad.elastica import fit as Fi
 
@@ -21,18 +19,6 @@ def _write(path, xy, dx=0.0, dy=0.0, later=0):
         os.utime(path, ns=(before + later * 10**9, before + later * 10**9))
 
 
-class _Messages:
-    """The report view's messages (App.Console.PrintMessage) while active."""
-
-    def __enter__(self):
-        self.said, self.saved = [], App.Console.PrintMessage
-        App.Console.PrintMessage = lambda text: self.said.append(text)
-        return self
-
-    def __exit__(self, *exc):
-        App.Console.PrintMessage = self.saved
-
-
 class FitCsvReloadTest(S.DocTest):
     doc_name = "ElasticaFitCsvReload"
 
@@ -45,7 +31,7 @@ class FitCsvReloadTest(S.DocTest):
         first = f.DataPoints[0]
         self.assertEqual(self.doc.recompute(), 0)          # unchanged: nothing refitted
         _write(path, xy, dx=100.0, later=1)                  # re-exported, moved 100 mm
-        with _Messages() as m:
+        with S.Said("PrintMessage") as m:
             self.assertEqual(self.doc.recompute(), 1)
         self.assertAlmostEqual((f.DataPoints[0] - first).x, 100.0, delta=1e-9)
         self.assertNotIn("Invalid", f.State)

@@ -3,7 +3,6 @@ it to FreeCAD's mm (sources.gather_points read every file as mm: 'x [m],y [m]' f
 1000 x too small, 'x [in],y [in]' 25.4 x): m, in, um and a file without a unit (mm, as
 before) give the same points in mm; a unit that is no length (px) reads as mm, said once
 in the report view."""
-import FreeCAD as App
 
 import elastica_samples as S
 from freecad.elastica import fit as Fi
@@ -11,18 +10,6 @@ from freecad.elastica import fit as Fi
 # mm in one of each header's unit (None: no unit in the header; pt: the typographic point,
 # 1/72 in, which FreeCAD's units do not know)
 UNITS = {"m": 1000.0, "in": 25.4, "um": 1e-3, "pt": 25.4 / 72, None: 1.0}
-
-
-class _Warnings:
-    """The report view's warnings (App.Console.PrintWarning) while active."""
-
-    def __enter__(self):
-        self.said, self.saved = [], App.Console.PrintWarning
-        App.Console.PrintWarning = lambda text: self.said.append(text)
-        return self
-
-    def __exit__(self, *exc):
-        App.Console.PrintWarning = self.saved
 
 
 class FitCsvUnitTest(S.DocTest):
@@ -56,7 +43,7 @@ class FitCsvUnitTest(S.DocTest):
     def test_a_unit_of_no_length_reads_as_mm_said_once(self):
         xy, _ = S.keyline_xy(30)
         path = self._file("picture.csv", "px", xy)
-        with _Warnings() as w:
+        with S.Said() as w:
             f = Fi.make(self.doc, [], csv_file=path, Model="smooth")
             self.doc.recompute()
             f.touch()
@@ -79,17 +66,12 @@ class FitCsvUnitSaidTest(S.DocTest):
     def _fit(self, unit):
         xy, _ = S.keyline_xy(30)
         path = FitCsvUnitTest._file(self, f"scan_{unit}.csv", unit, xy)
-        with _Warnings() as w:
-            said = []
-            saved, App.Console.PrintMessage = App.Console.PrintMessage, said.append
-            try:
-                f = Fi.make(self.doc, [], csv_file=path, Model="smooth")
-                self.doc.recompute()
-                f.touch()
-                self.doc.recompute()
-            finally:
-                App.Console.PrintMessage = saved
-        return f, said, w.said
+        with S.Said() as w, S.Said("PrintMessage") as m:
+            f = Fi.make(self.doc, [], csv_file=path, Model="smooth")
+            self.doc.recompute()
+            f.touch()
+            self.doc.recompute()
+        return f, m.said, w.said
 
     def test_the_conversion_is_said_in_the_status_and_once_in_the_report(self):
         for unit in ("m", "in", "um"):
@@ -110,7 +92,7 @@ class FitCsvUnitSaidTest(S.DocTest):
         # as a document saved before c48294f holds it: the file's numbers read as mm
         f.CsvUnit = "?"
         f.DataPoints = [p * 1e-3 for p in f.DataPoints]
-        with _Warnings() as w:
+        with S.Said() as w:
             f.touch()
             self.doc.recompute()
             f.touch()
@@ -124,7 +106,7 @@ class FitCsvUnitSaidTest(S.DocTest):
         self.assertTrue(f.Status.endswith("; scan_m.csv read in m, converted to mm"), f.Status)
         # a document saved after, or one whose fit was of the mm points: nothing said
         f.CsvUnit = "?"
-        with _Warnings() as w:
+        with S.Said() as w:
             f.touch()
             self.doc.recompute()
         self.assertFalse([t for t in w.said if "saved before" in t], w.said)

@@ -4,23 +4,10 @@ feature's Status in one line, and in the report view once per change, as the Fit
 are; it went by as a Python warning, the Status 'ok'. A FreeCAD source is an edge sampled
 exactly (its splines stay below 0.063 x the mean edge, 1e0f3bf's sweep), so the library's
 threshold is lowered here to make a keyline's real build stray."""
-import FreeCAD as App
 
 import elastica_samples as S
 from freecad.elastica import g2quad as G
 from freecad.elastica.geometry import el
-
-
-class _Warnings:
-    """The report view's warnings (App.Console.PrintWarning) while active."""
-
-    def __enter__(self):
-        self.said, self.saved = [], App.Console.PrintWarning
-        App.Console.PrintWarning = lambda text: self.said.append(text)
-        return self
-
-    def __exit__(self, *exc):
-        App.Console.PrintWarning = self.saved
 
 
 class G2QuadStrayTest(S.DocTest):
@@ -37,7 +24,7 @@ class G2QuadStrayTest(S.DocTest):
         saved = P.STRAY_EDGE
         P.STRAY_EDGE = 1e-9 * saved       # every build strays "more than" that
         try:
-            with _Warnings() as w:
+            with S.Said() as w:
                 f.Edges = 25            # (an input changed: built again, not kept)
                 self.doc.recompute()
                 f.touch()
