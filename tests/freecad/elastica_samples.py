@@ -378,3 +378,24 @@ class Said:
 
     def __exit__(self, *exc):
         setattr(App.Console, self.kind, self.saved)
+
+
+def outlier_xy():
+    """20 points along a 380 mm curve (0.25 mm noise) at (1500, -800), the 12th (index 11)
+    6 mm across it: the outlier a Fit names (test_elastica_fit_sketcher_names' hand sketch,
+    test_elastica_fit_csv_lines' file)."""
+    rng = np.random.default_rng(7)
+    c = el.SmoothElastica(x0=0, y0=0, phi=0.3, mu=(1 / 120.0) ** 2, k=0.6, q=0.2, length=380.0)
+    s = np.linspace(0, 380, 20)
+    pts = c.points(s) + rng.normal(0, 0.25, (20, 2))
+    th = float(c.angle([s[11]])[0])
+    pts[11] += 6.0 * np.array([-np.sin(th), np.cos(th)])
+    return pts + [1500.0, -800.0]
+
+
+def outlier_said(test, f, model):
+    """The one Warnings line of Fit ``f`` naming an outlier ('outliers?'), as said."""
+    from freecad.elastica.units import say
+    said = [w for w in say(list(f.Warnings)) if "outliers?" in w]
+    test.assertEqual(len(said), 1, (model, list(f.Warnings)))
+    return said[0]

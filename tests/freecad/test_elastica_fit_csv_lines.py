@@ -9,24 +9,8 @@ import os
 import tempfile
 import unittest
 
-import numpy as np
-
 import elastica_samples as S
 from freecad.elastica import fit as Fi
-from freecad.elastica.units import say
-
-
-def _hand_points():
-    """20 points along a 380 mm curve (0.25 mm noise), the 12th (index 11) 6 mm across it:
-    the outlier the Fit names (as test_elastica_fit_sketcher_names' hand sketch)."""
-    import libelastica as el
-    rng = np.random.default_rng(7)
-    c = el.SmoothElastica(x0=0, y0=0, phi=0.3, mu=(1 / 120.0) ** 2, k=0.6, q=0.2, length=380.0)
-    s = np.linspace(0, 380, 20)
-    pts = c.points(s) + rng.normal(0, 0.25, (20, 2))
-    th = float(c.angle([s[11]])[0])
-    pts[11] += 6.0 * np.array([-np.sin(th), np.cos(th)])
-    return pts + [1500.0, -800.0]
 
 
 # what stands before the data in each file: (its lines as an editor shows them, joined
@@ -46,13 +30,8 @@ HEADS = {
 class FitCsvLinesTest(S.DocTest):
     doc_name = "ElasticaFitCsvLines"
 
-    def _stray_said(self, f, model):
-        said = [w for w in say(list(f.Warnings)) if "outliers?" in w]
-        self.assertEqual(len(said), 1, (model, list(f.Warnings)))
-        return said[0]
-
     def test_a_points_line_is_an_editors(self):
-        pts = _hand_points()
+        pts = S.outlier_xy()
         with tempfile.TemporaryDirectory() as tmp:
             for case, (head, line) in HEADS.items():
                 path = os.path.join(tmp, "scan.csv")
@@ -68,7 +47,7 @@ class FitCsvLinesTest(S.DocTest):
                         f = Fi.make(self.doc, csv_file=path, Model=model)
                         self.doc.recompute()
                         self.assertIn(f"(line {line} of scan.csv, at (",
-                                      self._stray_said(f, model))
+                                      S.outlier_said(self, f, model))
                         self.doc.removeObject(f.Name)
 
 

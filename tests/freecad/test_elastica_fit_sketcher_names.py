@@ -18,20 +18,6 @@ import elastica_samples as S
 from freecad.elastica import fit as Fi
 from freecad.elastica import fit_core
 from freecad.elastica import sources as So
-from freecad.elastica.units import say
-
-
-def _hand_sketch():
-    """20 points along a 380 mm curve (0.25 mm noise) at (1500, -800), the 12th (index 11)
-    6 mm across it: the outlier the Fit names."""
-    import libelastica as el
-    rng = np.random.default_rng(7)
-    c = el.SmoothElastica(x0=0, y0=0, phi=0.3, mu=(1 / 120.0) ** 2, k=0.6, q=0.2, length=380.0)
-    s = np.linspace(0, 380, 20)
-    pts = c.points(s) + rng.normal(0, 0.25, (20, 2))
-    th = float(c.angle([s[11]])[0])
-    pts[11] += 6.0 * np.array([-np.sin(th), np.cos(th)])
-    return pts + [1500.0, -800.0]
 
 
 class FitSketcherNamesTest(S.DocTest):
@@ -58,39 +44,34 @@ class FitSketcherNamesTest(S.DocTest):
         self.doc.recompute()
         return sk, at
 
-    def _stray_said(self, f, model):
-        said = [w for w in say(list(f.Warnings)) if "outliers?" in w]
-        self.assertEqual(len(said), 1, (model, list(f.Warnings)))
-        return said[0]
-
     def test_a_stray_among_a_line_an_arc_and_20_points_is_named_as_the_elements_panel(self):
-        pts = _hand_sketch()
+        pts = S.outlier_xy()
         sk, at = self._mixed(pts)
         self.assertEqual(at[11], 14)      # 2 edges and a construction line drawn before it
         for model in ("discrete", "smooth"):
             f = Fi.make(self.doc, [(sk, [])], Model=model)
             self.doc.recompute()
-            said = self._stray_said(f, model)
+            said = S.outlier_said(self, f, model)
             # main: '(point 12 as given, ...)', the Elements panel's 12-Point another
             self.assertIn("(Mixed's 15-Point, in the sketch at (", said)
             self.assertNotIn("as given", said)
 
     def test_points_drawn_twice_are_merged_and_the_names_kept(self):
-        pts = _hand_sketch()
+        pts = S.outlier_xy()
         sk, at = self._mixed(pts, twice=(3, 8))
         self.assertEqual(at[11], 16)
         for model in ("discrete", "smooth"):
             f = Fi.make(self.doc, [(sk, [])], Model=model)
             self.doc.recompute()
             self.assertEqual(len(f.DataPoints), 20)
-            self.assertIn("(Mixed's 17-Point, in the sketch at (", self._stray_said(f, model))
+            self.assertIn("(Mixed's 17-Point, in the sketch at (", S.outlier_said(self, f, model))
 
     def test_the_names_read_the_sketchs_geometry_once(self):
         """point_names reads sketch.Geometry once (review of e6f2667: once per point, each
         read copying every geometry: a 10 000-point sketch's names took 32 s, its points
         0.04 s, at each recompute and at the command's check): the reads counted, the names
         the Elements panel's."""
-        sk, at = self._mixed(_hand_sketch())
+        sk, at = self._mixed(S.outlier_xy())
 
         class Counted:
             """The sketch, its Geometry reads counted."""
@@ -119,7 +100,7 @@ class FitSketcherNamesTest(S.DocTest):
     def test_picked_vertices_are_named_as_picked(self):
         """Vertices picked one by one: a wire's by its vertex name, a sketch's polyline's
         with the element the Elements panel lists it under (the first drawn ending there)."""
-        pts = _hand_sketch()
+        pts = S.outlier_xy()
         wire = S.polyline_3d(self.doc, pts, name="Wire")
         sk = self.doc.addObject("Sketcher::SketchObject", "Profile")
         sk.Placement = S.SKETCH_PLACEMENT
@@ -137,10 +118,10 @@ class FitSketcherNamesTest(S.DocTest):
             for model in ("discrete", "smooth"):
                 f = Fi.make(self.doc, [(obj, subs)], Model=model)
                 self.doc.recompute()
-                self.assertIn(f"({picked}, ", self._stray_said(f, model))
+                self.assertIn(f"({picked}, ", S.outlier_said(self, f, model))
 
     def test_a_files_point_is_named_by_its_line(self):
-        pts = _hand_sketch()
+        pts = S.outlier_xy()
         rows = ["# hand sketch, mm", "Profile 7", "x,y", ""]
         for k, (x, y) in enumerate(pts):
             rows.append(f"{x:.4f},{y:.4f}")
@@ -155,19 +136,19 @@ class FitSketcherNamesTest(S.DocTest):
             for model in ("discrete", "smooth"):
                 f = Fi.make(self.doc, csv_file=path, Model=model)
                 self.doc.recompute()
-                self.assertIn("(line 18 of scan.csv, at (", self._stray_said(f, model))
+                self.assertIn("(line 18 of scan.csv, at (", S.outlier_said(self, f, model))
 
     def test_a_npy_files_point_is_named_by_its_row(self):
         """A .npy array has rows, no lines (review of e6f2667: 'line 12 of scan.npy'); several
         listed as a file's lines are ("rows 3, 12 of scan.npy")."""
-        pts = _hand_sketch()
+        pts = S.outlier_xy()
         with tempfile.TemporaryDirectory() as tmp:
             path = os.path.join(tmp, "scan.npy")
             np.save(path, pts)
             for model in ("discrete", "smooth"):
                 f = Fi.make(self.doc, csv_file=path, Model=model)
                 self.doc.recompute()
-                self.assertIn("(row 12 of scan.npy, at (", self._stray_said(f, model))
+                self.assertIn("(row 12 of scan.npy, at (", S.outlier_said(self, f, model))
         said, short = fit_core._listed(["row 3 of scan.npy", "row 12 of scan.npy"])
         self.assertEqual(said, "rows 3, 12 of scan.npy")
         self.assertEqual(short("row 12 of scan.npy"), "row 12")
