@@ -109,22 +109,28 @@ class CombTogetherTest(S.DocTest):
         self.assertEqual(len(teeth), 2, teeth)
         self.assertLess(abs(teeth[0] - teeth[1]), 1e-7 * teeth[0], teeth)
 
+    def _three_arcs_combed(self):
+        """Sketches A, B, C (an arc each, 5, 10 and 3 mm high) and the comb of A with B and C
+        as MoreSources, recomputed: (a, b, c, comb)."""
+        sks = []
+        for name, y, rise in (("A", 0.0, 5.0), ("B", 100.0, 10.0), ("C", 200.0, 3.0)):
+            sk = self.doc.addObject("Sketcher::SketchObject", name)
+            sk.addGeometry(Part.ArcOfCircle(App.Vector(0, y, 0), App.Vector(25, y + rise, 0),
+                                            App.Vector(50, y, 0)), False)
+            sks.append(sk)
+        a, b, c = sks
+        self.doc.recompute()
+        comb = Co.make(self.doc, a, ["Edge1"], more=[(b, ["Edge1"]), (c, ["Edge1"])])
+        self.doc.recompute()
+        self.assertEqual(comb.Status, "ok")
+        return a, b, c, comb
+
     def test_source_deleted_the_first_of_more_sources_takes_its_place(self):
         """Review of F5: the comb's Source object deleted while MoreSources holds two more:
         the first of them becomes the Source and the comb is the comb of the two left, on
         their own scale, said in Status and the report view (on main: 'error: ... nothing
         read' with sources left)."""
-        docs = []
-        for name, y, rise in (("A", 0.0, 5.0), ("B", 100.0, 10.0), ("C", 200.0, 3.0)):
-            sk = self.doc.addObject("Sketcher::SketchObject", name)
-            sk.addGeometry(Part.ArcOfCircle(App.Vector(0, y, 0), App.Vector(25, y + rise, 0),
-                                            App.Vector(50, y, 0)), False)
-            docs.append(sk)
-        a, b, c = docs
-        self.doc.recompute()
-        comb = Co.make(self.doc, a, ["Edge1"], more=[(b, ["Edge1"]), (c, ["Edge1"])])
-        self.doc.recompute()
-        self.assertEqual(comb.Status, "ok")
+        a, b, c, comb = self._three_arcs_combed()
         # the comb of B and C alone, for reference
         ref = Co.make(self.doc, b, ["Edge1"], more=[(c, ["Edge1"])])
         self.doc.recompute()
@@ -155,17 +161,7 @@ class CombTogetherTest(S.DocTest):
         recompute's Status is 'ok', not 'ok (its Source was deleted: B ...)' of a deletion
         undone (review revT: promote's note outlived the Undo)."""
         self.doc.UndoMode = 1
-        sks = []
-        for name, y, rise in (("A", 0.0, 5.0), ("B", 100.0, 10.0), ("C", 200.0, 3.0)):
-            sk = self.doc.addObject("Sketcher::SketchObject", name)
-            sk.addGeometry(Part.ArcOfCircle(App.Vector(0, y, 0), App.Vector(25, y + rise, 0),
-                                            App.Vector(50, y, 0)), False)
-            sks.append(sk)
-        a, b, c = sks
-        self.doc.recompute()
-        comb = Co.make(self.doc, a, ["Edge1"], more=[(b, ["Edge1"]), (c, ["Edge1"])])
-        self.doc.recompute()
-        self.assertEqual(comb.Status, "ok")
+        a, b, c, comb = self._three_arcs_combed()
         self.doc.openTransaction("Delete")
         self.doc.removeObject("A")
         self.doc.commitTransaction()
