@@ -48,19 +48,6 @@ def _outside(hull, p):
     return out
 
 
-class _Warnings:
-    """Counts the report view's warnings (App.Console.PrintWarning) while active."""
-
-    def __enter__(self):
-        self.said = []
-        self.saved = App.Console.PrintWarning
-        App.Console.PrintWarning = lambda text: self.said.append(text)
-        return self
-
-    def __exit__(self, *exc):
-        App.Console.PrintWarning = self.saved
-
-
 def _vertices(doc, pts3d, prefix="P"):
     """Part::Vertex objects at the given global points."""
     out = []
@@ -290,7 +277,7 @@ class EllipticBlendTest(S.DocTest):
     def test_basis_off_the_convex_hull_is_warned_once_and_cleared(self):
         self.sk = S.points_sketch(self.doc, HIGH_Q1, "HighQ1")
         f = El.make(self.doc, [(self.sk, [])], Mode="control", K=0.3, KConvention="parameter")
-        with _Warnings() as w:
+        with S.Said() as w:
             self.doc.recompute()
             self.assertEqual(f.Status, "ok")
             self.assertTrue(f.ConvexHull and f.BasisMin > -1e-12 and not f.Warnings)
@@ -351,7 +338,7 @@ class EllipticBlendTest(S.DocTest):
     def test_ill_conditioned_interpolation_is_warned(self):
         zig = S.points_sketch(self.doc, ZIGZAG, "Zigzag")
         f = El.make(self.doc, [(zig, [])], K=0.3)
-        with _Warnings() as w:
+        with S.Said() as w:
             self.doc.recompute()
             self.assertEqual(f.Status, "ok")
             self.assertTrue(f.ConvexHull and not f.Warnings and f.Spread < G.el().SPREAD_MAX)
@@ -379,7 +366,7 @@ class EllipticBlendTest(S.DocTest):
         pts = [(0.0, 0.0), (30.0, 80.0), (70.0, 90.0), (100.0, 0.0)]
         sk = S.points_sketch(self.doc, pts, "Looping")
         f = El.make(self.doc, [(sk, [])], K=0.52, KConvention="parameter")
-        with _Warnings() as w, warnings.catch_warnings():
+        with S.Said() as w, warnings.catch_warnings():
             warnings.simplefilter("error")
             self.doc.recompute()
         want = G.el().blend_curve(pts, m=0.52)
@@ -409,7 +396,7 @@ class EllipticBlendTest(S.DocTest):
         self.doc = App.openDocument(path)
         f = self.doc.getObject(name)
         self.assertEqual(list(f.Warnings), warnings)
-        with _Warnings() as w:
+        with S.Said() as w:
             f.touch()
             self.doc.recompute()
         self.assertEqual((list(f.Warnings), w.said), (warnings, []))
