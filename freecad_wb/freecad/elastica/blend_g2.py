@@ -5,10 +5,9 @@ that solve, the highest tension one was found at. blend_start.py finds the faire
 where the free batten is a snake or missing."""
 from __future__ import annotations
 
-
-from .geometry import binding_module, el, np, plane_curvature
+from .geometry import el, np, plane_curvature
 from .proxy import InputProblem
-from .spline_solve import g2_met_hint, g2_solves
+from .spline_solve import g2_met_hint, g2_solves, quiet_spline
 from .units import (floor_digits, length_mark, per_area_mark, per_length_mark, reach_mark,
                     tension_mark, tension_unit_mark)
 
@@ -160,9 +159,7 @@ G2_REACH_MULTIPLES = (1.25, 1.5, 2.0, 2.5, 3.0, 4.0, 6.0, 10.0)
 def quiet_g2(pts, ends, **by):
     """el.elastic_spline(pts, **ends, **by) for a probe (the lengths an error lists, where G2
     starts): its LoopWarning / UnstableWarning were red report-view lines (QA23gui s2)."""
-    e = el()
-    with binding_module("_quiet").quiet(e.LoopWarning, e.UnstableWarning):   # this thread's
-        return e.elastic_spline(pts, **ends, **by)
+    return quiet_spline(pts, **ends, **by)
 
 
 def g2_by_length(pts, ends, lengths):

@@ -25,7 +25,8 @@ from .proxy import (FeatureProxy, InputProblem, add_edge_end, add_enum,
                     check_degree, check_number, check_tolerance, edge_end_choice, new_feature,
                     read_only, set_said, source_list)
 from .sources import gather_vertices
-from .spline_solve import MAX_ITER, DoublesBack, NoSpline, _library_message, _solve
+from .spline_solve import (MAX_ITER, DoublesBack, NoSpline, _library_message, _solve,
+                           quiet_spline)
 
 MODES = ["tension", "length"]
 END_CONDITIONS = ["natural", "tangent", "G2"]
@@ -323,9 +324,7 @@ def kept_shown(xy, tension, specs, sp, curves, length, shown_tension, switched=F
     if shown_tension != tension:
         return sp, "", ""
     try:
-        with binding_module("_quiet").quiet(e.LoopWarning, e.UnstableWarning):   # spline_core notes them
-            kept = e.elastic_spline(xy, tension=tension, start=specs[0], end=specs[1],
-                                    initial=pieces)
+        kept = quiet_spline(xy, tension=tension, start=specs[0], end=specs[1], initial=pieces)
     except (ValueError, ArithmeticError, RuntimeError, e.ElasticaError):
         kept = None
     if kept is None or abs(float(kept.length) - length) > 1e-6 * length:
@@ -348,10 +347,9 @@ def followed_kept(xy, tension, specs, sp, length):
     278.02 mm. Where either solve fails, the library's own (``sp``) is shown and said."""
     e = el()
     try:
-        with binding_module("_quiet").quiet(e.LoopWarning, e.UnstableWarning):   # spline_core notes them
-            by_length = e.elastic_spline(xy, length=length, start=specs[0], end=specs[1])
-            kept = e.elastic_spline(xy, tension=tension, start=specs[0], end=specs[1],
-                                    initial=by_length.pieces)
+        by_length = quiet_spline(xy, length=length, start=specs[0], end=specs[1])
+        kept = quiet_spline(xy, tension=tension, start=specs[0], end=specs[1],
+                            initial=by_length.pieces)
     except (ValueError, ArithmeticError, RuntimeError, e.ElasticaError) as exc:
         lost = (f"the spline kept at the switch of Solve for ({length_mark(length, 6)}) "
                 f"could not be followed to the moved points ({_library_message(exc)}), so "

@@ -103,6 +103,15 @@ def _tangent_only(spec):
     return spec["tangent"] if isinstance(spec, dict) else spec
 
 
+def quiet_spline(xy, **kw):
+    """el.elastic_spline(xy, **kw) with its LoopWarning and UnstableWarning quiet in this
+    thread only (libelastica._quiet): a looping or unstable spline is noted by its caller
+    (spline_core's Status, a probe's hint), not a red report-view line."""
+    e = el()
+    with binding_module("_quiet").quiet(e.LoopWarning, e.UnstableWarning):
+        return e.elastic_spline(xy, **kw)
+
+
 def _solve(xy, mode, value, closed, start, end, max_iter=MAX_ITER):
     """el.elastic_spline with the accepted-residual rule; NoSpline when no batten passes the
     points at this tension or length, InputProblem for the rest.
@@ -117,8 +126,7 @@ def _solve(xy, mode, value, closed, start, end, max_iter=MAX_ITER):
     largest = met = None
 
     def solve(**by):
-        with binding_module("_quiet").quiet(e.LoopWarning, e.UnstableWarning):   # spline_core notes them
-            return e.elastic_spline(xy, start=start, end=end, closed=closed, max_iter=max_iter, **by)
+        return quiet_spline(xy, start=start, end=end, closed=closed, max_iter=max_iter, **by)
 
     try:
         return solve(**kw), ""
