@@ -28,14 +28,21 @@ def jittered_oval(doc, noise=0.3):
     return sk
 
 
+def jittered_spline(test):
+    """QA gui F2's source: the closed Elastic spline through jittered_oval's points, solved
+    ('ok'), in ``test``'s document."""
+    sk = jittered_oval(test.doc)
+    s = SP.make(test.doc, [(sk, [])], Closed=True)
+    test.doc.recompute()
+    test.assertTrue(s.Status.startswith("ok"), s.Status)
+    return s
+
+
 class G2QuadMoreEdgesTest(S.DocTest):
     doc_name = "ElasticaG2QuadMoreEdges"
 
     def test_a_closed_jittered_outline_is_made_with_its_edges_to_edit(self):
-        sk = jittered_oval(self.doc)
-        s = SP.make(self.doc, [(sk, [])], Closed=True)
-        self.doc.recompute()
-        self.assertTrue(s.Status.startswith("ok"), s.Status)
+        s = jittered_spline(self)
         said = []
 
         def wrong(text, selection=True):
@@ -82,9 +89,7 @@ class G2QuadMoreEdgesTest(S.DocTest):
         """The command's check found the count (a search of up to cover_search_limit builds,
         2-4 s on the oval): the feature's first recompute takes that outcome, the error,
         instead of searching again; the feature made in error is one Undo step."""
-        sk = jittered_oval(self.doc)
-        s = SP.make(self.doc, [(sk, [])], Closed=True)
-        self.doc.recompute()
+        s = jittered_spline(self)
         self.doc.UndoMode = 1
         calls, search = [], Q._more_edges
 

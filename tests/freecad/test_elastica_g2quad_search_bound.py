@@ -6,8 +6,7 @@ work is counted (samples taken), not timed; the limit is lowered here so QA gui 
 jittered oval, which builds from Edges = 25 on, stops first."""
 import elastica_samples as S
 from freecad.elastica import g2quad as Q
-from freecad.elastica import spline as SP
-from test_elastica_g2quad_more_edges import jittered_oval
+from test_elastica_g2quad_more_edges import jittered_spline
 
 
 class _Sampled:
@@ -30,10 +29,7 @@ class G2QuadSearchBoundTest(S.DocTest):
     doc_name = "ElasticaG2QuadSearchBound"
 
     def test_a_search_past_its_samples_stops_and_says_so(self):
-        sk = jittered_oval(self.doc)
-        s = SP.make(self.doc, [(sk, [])], Closed=True)
-        self.doc.recompute()
-        self.assertTrue(s.Status.startswith("ok"), s.Status)
+        s = jittered_spline(self)
         q = Q.make(self.doc, [(s, [])], Edges=24)
         saved = Q.SEARCH_SAMPLES
         Q.SEARCH_SAMPLES = Q.SAMPLES_PER_VERTEX * 24      # less than Edges = 25 takes
