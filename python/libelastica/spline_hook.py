@@ -34,7 +34,10 @@ def hook(sp) -> Optional[Tuple[int, float, float]]:
     pts = np.asarray(sp.data, dtype=np.float64)
     poly = np.vstack([pts, pts[:1]]) if sp.closed else pts
     spacing = float(np.median(np.hypot(*np.diff(poly, axis=0).T))) if len(poly) > 1 else 0.0
-    if not spacing > 0.0:
+    # sp.max_curvature (the C result's, exact per piece) bounds the samples' below: a spline
+    # that does not hook, the common case, is told without sampling its pieces (a C call
+    # each: 4.8 ms for 30 pieces, more than the spline's own 3.8 ms)
+    if not (spacing > 0.0 and sp.max_curvature * spacing > HOOK_RATIO):
         return None
     kappa = [float(np.abs(p.curvature(np.linspace(0.0, p.length, 65))).max()) for p in sp.pieces]
     j = int(np.argmax(kappa))
