@@ -192,7 +192,7 @@ def test_two_threads_fit_at_once_as_one_does():
     """el.fit's one call from two threads at once (the GIL released in the C call, no global
     state in binding.c): every result the same to the bit as the same fit alone (the
     warnings' threads are test_warnings_threads.py's)."""
-    import threading
+    from together import run_together
     rng = np.random.default_rng(7)
     sets = [(elastica(model, k, n, 1.0, rng, 0.01), model)
             for model in ("discrete", "smooth") for k, n in ((0.4, 300), (1.2, 500), (3.0, 400))]
@@ -207,9 +207,5 @@ def test_two_threads_fit_at_once_as_one_does():
     with warnings.catch_warnings():         # (process-wide: set here, not in the threads)
         warnings.simplefilter("ignore")
         alone = [fit(P, m) for P, m in sets]
-        threads = [threading.Thread(target=run, args=(t,)) for t in range(2)]
-        for t in threads:
-            t.start()
-        for t in threads:
-            t.join()
+        run_together(lambda: run(0), lambda: run(1))
     assert got[0] == alone and got[1] == alone

@@ -11,6 +11,7 @@ import numpy as np
 import pytest
 
 import libelastica as el
+from together import run_together
 
 OFF = np.array([512345.678, 5012345.432])
 # test_g2quad's elastica turning 46.7 rad: no G2 quadratic from 7 to 25 edges, 26 covers
@@ -51,11 +52,7 @@ def test_another_threads_warnings_are_left_alone():
 
     with warnings.catch_warnings(record=True) as said:
         warnings.simplefilter("always")
-        threads = [threading.Thread(target=builds), threading.Thread(target=other)]
-        for th in threads:
-            th.start()
-        for th in threads:
-            th.join()
+        run_together(builds, other)
     assert not failed, failed
     theirs = [w for w in said if str(w.message).startswith("other ")]
     ours = [w for w in said if str(w.message).startswith("g2_quadratic")]

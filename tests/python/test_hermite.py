@@ -495,7 +495,7 @@ def test_a_call_made_inside_a_call_leaves_its_results_intact():
 
 def test_two_threads_solve_at_once():
     """The binding's per-thread buffers: concurrent calls give the serial results."""
-    import threading
+    from together import run_together
     rng = np.random.default_rng(8)
     probs = [(tuple(rng.uniform(-2, 2, 2)), tuple(rng.uniform(-1, 1, 2)), float(rng.uniform(0, 30)))
              for _ in range(60)]
@@ -506,11 +506,7 @@ def test_two_threads_solve_at_once():
     def run(k):
         for i, p in enumerate(probs):
             out[k][i] = solve(p)
-    ts = [threading.Thread(target=run, args=(k,)) for k in range(2)]
-    for t in ts:
-        t.start()
-    for t in ts:
-        t.join()
+    run_together(lambda: run(0), lambda: run(1))
     assert out[0] == serial and out[1] == serial
 
 

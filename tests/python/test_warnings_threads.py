@@ -12,6 +12,7 @@ import numpy as np
 import libelastica as el
 from libelastica._quiet import quiet, say
 from libelastica.fit import quiet_fit
+from together import run_together
 
 # 7 points of a sine's period: the discrete fit's polygon cuts its bends, so el.fit says
 # a SparseWarning (the smooth fit ~10 x nearer), once a fit, ~7 ms
@@ -50,11 +51,7 @@ def test_two_threads_fitting_at_once_see_their_own_warnings():
 
     with warnings.catch_warnings(record=True) as said:
         warnings.simplefilter("always")
-        threads = [threading.Thread(target=loud), threading.Thread(target=quiet_one)]
-        for th in threads:
-            th.start()
-        for th in threads:
-            th.join()
+        run_together(loud, quiet_one)
     assert not failed, failed
     assert counts["quiet"] > 20 and counts["quiet_loud"] > 1, counts
     assert all(issubclass(w.category, el.SparseWarning) and w.filename == __file__ for w in said), \
