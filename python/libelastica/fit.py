@@ -34,8 +34,8 @@ from ._values import ValueEquality
 from .fit_cost import EndConditionWarning, checked_ends
 from ._fit_call import one_call
 from .fit_input import _is_number, _pair, explain_input_status, require_distinct
-from .misfit import (MISFIT_RATIO, MisfitWarning, OutlierWarning, _Figures, _places, _verdict,
-                     _warn_outliers, misfit_summary)
+from .misfit import (MISFIT_RATIO, MisfitWarning, OutlierWarning, _Figures, _none_far, _places,
+                     _verdict, _warn_outliers, misfit_summary)
 from .fit_retrace import retrace_gate
 from .fit_uncertainty import Uncertain
 from .order import (Retrace, curve_order, data_run_back, order_summary, ordering, passed_over,
@@ -217,9 +217,10 @@ def far_points(distances, points, factor: float = OUTLIER_FACTOR,
         return np.intersect1d(far_points(d, pts, factor), free)
     if len(d) < OUTLIER_MIN_POINTS:
         return np.empty(0, dtype=np.intp)
-    typical = 1.4826 * median(d)        # (np.median's value, by one np.partition: _median.py)
-    if not d.max() > factor * typical:      # none far (el.fit asks this of every fit): no extent
+    med = median(d)                     # (np.median's value, by one np.partition: _median.py)
+    if _none_far(med, d.max(), factor):     # none far (el.fit asks this of every fit): no extent
         return np.empty(0, dtype=np.intp)
+    typical = 1.4826 * med
     extent = float(np.max(np.ptp(pts, axis=0)))
     m = int(np.count_nonzero((d > factor * typical) & (d > OUTLIER_FLOOR * extent)))
     if m == 0 or m == len(d):

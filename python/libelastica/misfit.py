@@ -690,7 +690,7 @@ def _fit_outliers(r, free_distances=None, screened=None):
         free_distances = r.free.distances
     if (screened is not None and free_distances is None and screened[2] is r.distances
             and len(r.distances) >= OUTLIER_MIN_POINTS and not math.isnan(screened[0])
-            and not screened[1] > OUTLIER_FACTOR * (1.4826 * screened[0])):
+            and _none_far(screened[0], screened[1], OUTLIER_FACTOR)):
         far = np.empty(0, dtype=np.intp)      # (far_points' answer: none beyond the factor)
     else:
         far = far_points(r.distances, r.points, free_distances=free_distances)
@@ -701,6 +701,13 @@ def _fit_outliers(r, free_distances=None, screened=None):
     from .stray import stray_point
     stray = stray_point(r)
     return (far, None) if stray is None else (np.array([stray[0]], dtype=np.intp), stray)
+
+
+def _none_far(median_d: float, max_d: float, factor: float) -> bool:
+    """far_points' first test (fit.py), which _fit_outliers asks of el.fit's one call's
+    figures too: no |distance| beyond ``factor`` x the typical one, 1.4826 x the median
+    |distance| (``median_d``; ``max_d`` the largest)."""
+    return not max_d > factor * (1.4826 * median_d)
 
 
 def _warn_outliers(r, screened=None) -> None:
