@@ -243,7 +243,7 @@ check-freecad: lib
 
 # The stages are independent once the library is built: make check runs them CHECK_JOBS (the
 # cores) at a time, each stage's output printed whole when it ends (-Otarget). It is CPU-bound
-# (~39 CPU-min, 20 min on 2 cores at 4b4c3af: as long as the cores are kept busy, the order changes little), so
+# (~37 CPU-min, 19 min on 2 cores at df9a38e: as long as the cores are kept busy, the order changes little), so
 # the longest single processes start first: the pytest run under FreeCAD's Python (~6 CPU-min),
 # FreeCAD's tests (~3.5 min, FC_GROUPS freecadcmd processes one after another; its GUI smoke, ~3 min, beside them
 # when a slot is free), then the other pytest run, and the ~100 short C test runs fill the
